@@ -1,0 +1,57 @@
+"""kegel: power losses of tapered roller bearings.
+
+Contact friction from a multibody model (C++ core ``kegel._core``), hydraulic drag and churning
+losses from correlations (``kegel.correlations``) and OpenFOAM CFD (``kegel.cfd_cases``), coupled
+in ``kegel.coupling``.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version as _pkg_version
+
+from . import _core
+from .data import (
+    BearingData,
+    LubricantData,
+    MaterialData,
+    available_bearings,
+    available_lubricants,
+    available_materials,
+    load_bearing,
+    load_lubricant,
+    load_material,
+)
+from .errors import KegelInputError
+from .geometry import BearingGeometry, apex_residual, derive_geometry, envelope_violations
+from .lubricant import LubricantState, lubricant_state
+from .scene import OperatingPoint, Scene, load_scene
+from .units import parse_quantity
+
+try:
+    __version__ = _pkg_version("kegel")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree without install
+    __version__ = _core.core_version()
+
+__all__ = [
+    "__version__",
+    "BearingData",
+    "BearingGeometry",
+    "KegelInputError",
+    "LubricantData",
+    "LubricantState",
+    "MaterialData",
+    "OperatingPoint",
+    "Scene",
+    "apex_residual",
+    "available_bearings",
+    "available_lubricants",
+    "available_materials",
+    "derive_geometry",
+    "envelope_violations",
+    "load_bearing",
+    "load_lubricant",
+    "load_material",
+    "load_scene",
+    "lubricant_state",
+    "parse_quantity",
+]

@@ -1,0 +1,220 @@
+"""The ``kegel`` command.
+
+Commands
+--------
+``kegel bearing 32216``
+    Derived internal geometry of a bearing, as a table.
+``kegel lubricant FVA3 --temperature "50 degC"``
+    Dynamic and kinematic viscosity, density and pressure-viscosity coefficient.
+``kegel check SCENE [--set KEY=VALUE ...]``
+    Validate a scene file.
+``kegel run SCENE [--set KEY=VALUE ...] [--output DIR]``
+    Run a scene. Until the solvers land it prints and writes the scene's derived inputs.
+
+Every command takes ``--format json`` for machine-readable output on stdout (field names carry
+their units, see README.md). Input errors print one line naming the file, key, value and
+expectation to stderr and exit with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from pathlib import Path
+from typing import Any, Sequence
+
+from .data import load_bearing, load_lubricant, load_material
+from .errors import KegelInputError
+from .geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
+from .io import atomic_write_json, provenance
+from .lubricant import lubricant_state
+from .scene import Scene, load_scene
+from .units import parse_quantity
+
+__all__ = ["main"]
+
+
+def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=sys.stdout) -> None:
+    def fmt(v: Any) -> str:
+        if isinstance(v, float):
+            return f"{v:.6g}"
+        return "" if v is None else str(v)
+
+    cells = [[fmt(v) for v in row] for row in rows]
+    widths = [max(len(h), *(len(r[i]) for r in cells)) if cells else len(h) for i, h in enumerate(headers)]
+    print("  ".join(h.ljust(w) for h, w in zip(headers, widths)).rstrip(), file=out)
+    print("  ".join("-" * w for w in widths), file=out)
+    for r in cells:
+        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(r, widths))).rstrip(), file=out)
+
+
+def _json_out(data: Any) -> None:
+    json.dump(data, sys.stdout, indent=2, allow_nan=False)
+    sys.stdout.write("\n")
+
+
+def _cmd_bearing(args: argparse.Namespace) -> int:
+    bearing = load_bearing(args.designation, source="command line", key="bearing")
+    material = load_material(args.material, source="command line", key="--material")
+    g = derive_geometry(bearing, material)
+    if args.format == "json":
+        _json_out({"bearing": g.as_dict(), "apex_residual": apex_residual(g),
+                   "envelope_violations": envelope_violations(g), "data_file": bearing.source_file})
+        return 0
+    print(f"Tapered roller bearing {g.designation} (data: {bearing.source_file})")
+    _print_table(("quantity", "value", "unit"), geometry_table(g))
+    problems = envelope_violations(g)
+    print("catalogue envelope: " + ("respected" if not problems else "; ".join(problems)))
+    return 0
+
+
+def _cmd_lubricant(args: argparse.Namespace) -> int:
+    lub = load_lubricant(args.name, source="command line", key="lubricant")
+    temps = args.temperature or ["40 degC", "50 degC", "100 degC"]
+    states = [
+        lubricant_state(lub, parse_quantity(t, "temperature", source="command line", key="--temperature"),
+                        source="command line", key="--temperature")
+        for t in temps
+    ]
+    if args.format == "json":
+        _json_out({"lubricant": lub.name, "data_file": lub.source_file, "states": [s.as_dict() for s in states]})
+        return 0
+    print(f"{lub.name}: {lub.description} (data: {lub.source_file})")
+    _print_table(
+        ("temperature [degC]", "eta [mPa s]", "nu [mm2/s]", "rho [kg/m3]", "alpha_p [1/GPa]", "c_p [J/(kg K)]"),
+        [(s.temperature_degC, s.dynamic_viscosity_Pas * 1e3, s.kinematic_viscosity_m2_s * 1e6,
+          s.density_kg_m3, s.pressure_viscosity_coefficient_1_Pa * 1e9, s.specific_heat_J_kgK) for s in states],
+    )
+    return 0
+
+
+def _scene_summary(scene: Scene) -> dict[str, Any]:
+    g = scene.geometry
+    states = {}
+    for p in scene.operating_points:
+        if p.temperature_K not in states:
+            states[p.temperature_K] = lubricant_state(scene.lubricant, p.temperature_K, source=scene.source,
+                                                      key="operating.temperature")
+    return {
+        "scene": {"name": scene.name, "description": scene.description, "file": scene.source,
+                  "resolved": scene.resolved},
+        "bearing": scene.bearing.designation,
+        "material": scene.material.name,
+        "lubricant": scene.lubricant.name,
+        "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m,
+                        "oil_level_as_written": scene.lubrication.oil_level_as_written},
+        "fidelity": scene.fidelity.as_dict(),
+        "swept": list(scene.swept),
+        "geometry": g.as_dict(),
+        "operating_points": [
+            {**p.as_dict(), "lubricant_state": states[p.temperature_K].as_dict()} for p in scene.operating_points
+        ],
+    }
+
+
+def _cmd_check(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene, args.set or ())
+    summary = _scene_summary(scene)  # evaluates the lubricant at every temperature, too
+    if args.format == "json":
+        _json_out({"valid": True, "file": str(args.scene), "name": scene.name,
+                   "operating_point_count": len(scene.operating_points), "swept": list(scene.swept),
+                   "fidelity": summary["fidelity"]})
+        return 0
+    print(f"{args.scene}: valid scene '{scene.name}': bearing {scene.bearing.designation}, "
+          f"lubricant {scene.lubricant.name}, {len(scene.operating_points)} operating point(s)"
+          + (f" sweeping {', '.join(scene.swept)}" if scene.swept else "")
+          + f", fidelity {scene.fidelity.name}")
+    return 0
+
+
+def _cmd_run(args: argparse.Namespace) -> int:
+    t0 = time.perf_counter()
+    scene = load_scene(args.scene, args.set or ())
+    summary = _scene_summary(scene)
+    out_dir = Path(args.output) if args.output else scene.output_directory
+    summary["runtime_s"] = time.perf_counter() - t0
+    summary["provenance"] = provenance()
+    summary["stage"] = "inputs"  # the solvers (quasi-static, dynamic, hydraulic) add results here
+    path = atomic_write_json(out_dir / "inputs.json", summary)
+    if args.format == "json":
+        _json_out({**summary, "files": {"inputs": str(path)}})
+        return 0
+    g = scene.geometry
+    lub = scene.lubrication
+    print(f"Scene '{scene.name}' ({scene.source})")
+    if scene.description:
+        print(f"  {scene.description}")
+    print(f"  bearing {g.designation}: d = {g.bore_diameter_m*1e3:g} mm, D = {g.outer_diameter_m*1e3:g} mm, "
+          f"d_m = {g.pitch_diameter_m*1e3:g} mm, Z = {g.roller_count}, contact angle "
+          f"{math.degrees(g.cup_angle_rad):.2f} deg")
+    print(f"  lubricant {scene.lubricant.name}; lubrication {lub.mode}"
+          + (f", oil level {lub.oil_level_m*1e3:.2f} mm ({lub.oil_level_as_written})" if lub.oil_level_m else ""))
+    f = scene.fidelity
+    print(f"  fidelity {f.name}: {f.slices} slices, rib {f.rib_model}"
+          + (f" {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "")
+          + f", cage {'on' if f.cage else 'off'}, {f.solution}, hydraulic {f.hydraulic}")
+    rows = []
+    for p in summary["operating_points"]:
+        s = p["lubricant_state"]
+        axial = f"{p['axial_load_N']/1e3:g} kN" if p["axial_load_N"] is not None else f"{p['axial_offset_m']*1e6:g} um"
+        rows.append((p["index"], p["speed_rpm"], axial, p["radial_load_N"] / 1e3, p["temperature_degC"],
+                     s["dynamic_viscosity_Pas"] * 1e3, s["kinematic_viscosity_m2_s"] * 1e6, s["density_kg_m3"],
+                     s["pressure_viscosity_coefficient_1_Pa"] * 1e9))
+    _print_table(("#", "n [rpm]", "axial", "Fr [kN]", "T [degC]", "eta [mPa s]", "nu [mm2/s]", "rho [kg/m3]",
+                  "alpha_p [1/GPa]"), rows)
+    print("Friction and hydraulic losses: not computed yet (the quasi-static solver lands with issue 5).")
+    print(f"inputs written to {path} ({summary['runtime_s']*1e3:.0f} ms)")
+    return 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    from . import __version__
+
+    p = argparse.ArgumentParser(prog="kegel", description="Power losses of tapered roller bearings.")
+    p.add_argument("--version", action="version", version=f"kegel {__version__}")
+    sub = p.add_subparsers(dest="command", required=True)
+
+    def common(sp: argparse.ArgumentParser) -> None:
+        sp.add_argument("--format", choices=("table", "json"), default="table",
+                        help="table for people, json for programs (default: table)")
+
+    b = sub.add_parser("bearing", help="derived internal geometry of a bearing")
+    b.add_argument("designation", help="bearing designation (e.g. 32216) or a bearing .toml file")
+    b.add_argument("--material", default="bearing_steel", help="roller material (default: bearing_steel)")
+    common(b)
+    b.set_defaults(func=_cmd_bearing)
+
+    lu = sub.add_parser("lubricant", help="lubricant properties at temperatures")
+    lu.add_argument("name", help="lubricant name (e.g. FVA3) or a lubricant .toml file")
+    lu.add_argument("--temperature", action="append", metavar="T",
+                    help='temperature with unit, e.g. "50 degC" (repeatable; default 40, 50, 100 degC)')
+    common(lu)
+    lu.set_defaults(func=_cmd_lubricant)
+
+    for name, func, text in (("check", _cmd_check, "validate a scene file"), ("run", _cmd_run, "run a scene")):
+        sp = sub.add_parser(name, help=text)
+        sp.add_argument("scene", help="scene .toml file")
+        sp.add_argument("--set", action="append", metavar="KEY=VALUE",
+                        help='override a scene value, e.g. --set operating.axial_load="6.5 kN" (repeatable)')
+        common(sp)
+        sp.set_defaults(func=func)
+        if name == "run":
+            sp.add_argument("--output", help="result folder (default: the scene's [output] directory)")
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``kegel`` command; returns the exit status."""
+    args = _parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except KegelInputError as exc:
+        print(f"kegel: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

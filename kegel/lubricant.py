@@ -1,0 +1,61 @@
+"""Lubricant state at a temperature: the properties users and the correlations read.
+
+The property functions themselves live in the C++ core (``kegel._core``; Eq. 7 and 8 of the
+seed paper); this module only bundles them for one temperature.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+from . import _core
+from .data import LubricantData, cragoe_specific_heat_J_kgK
+from .errors import KegelInputError
+
+__all__ = ["LubricantState", "lubricant_state"]
+
+
+@dataclass(frozen=True)
+class LubricantState:
+    """Properties of a lubricant at one temperature and ambient pressure (SI units)."""
+
+    name: str
+    temperature_K: float
+    temperature_degC: float
+    dynamic_viscosity_Pas: float
+    kinematic_viscosity_m2_s: float
+    density_kg_m3: float
+    pressure_viscosity_coefficient_1_Pa: float
+    thermal_conductivity_W_mK: float
+    specific_heat_J_kgK: float
+
+    def as_dict(self) -> dict[str, float | str]:
+        """Plain dictionary (JSON field names carry the units)."""
+        return asdict(self)
+
+
+def lubricant_state(lub: LubricantData, temperature_K: float, *, source: str = "<argument>",
+                    key: str = "temperature") -> LubricantState:
+    """Evaluate a lubricant's properties at ``temperature_K`` and ambient pressure.
+
+    Raises
+    ------
+    KegelInputError
+        If the temperature is outside the domain of the lubricant's formulas.
+    """
+    core = lub.core
+    try:
+        eta = _core.viscosity_ambient_Pas(core, temperature_K)
+    except ValueError as exc:
+        raise KegelInputError(source, key, f"{temperature_K - 273.15:g} degC", str(exc)) from None
+    return LubricantState(
+        name=lub.name,
+        temperature_K=temperature_K,
+        temperature_degC=temperature_K - 273.15,
+        dynamic_viscosity_Pas=eta,
+        kinematic_viscosity_m2_s=_core.kinematic_viscosity_m2_s(core, temperature_K),
+        density_kg_m3=_core.density_kg_m3(core, temperature_K),
+        pressure_viscosity_coefficient_1_Pa=_core.pressure_viscosity_coefficient_per_Pa(core, temperature_K),
+        thermal_conductivity_W_mK=lub.parameters.thermal_conductivity_W_mK,
+        specific_heat_J_kgK=cragoe_specific_heat_J_kgK(lub, temperature_K),
+    )

@@ -1,0 +1,547 @@
+"""Scene files: what to simulate, written in TOML with units (``"6 kN"``, ``"2000 rpm"``).
+
+A scene names the bearing, the lubricant, the operating point or sweep, the lubrication and the
+model fidelity. :func:`load_scene` validates it completely before anything runs; every error
+names the file (or ``--set``), the dotted key, the value and what was expected.
+
+Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)::
+
+    [scene]
+    name = "32216, Table 1"                  # optional
+    description = "..."                      # optional
+
+    [bearing]
+    designation = "32216"                    # or a path to a bearing .toml file
+    material = "bearing_steel"               # optional
+
+    [lubricant]
+    name = "FVA3"                            # or a path to a lubricant .toml file
+
+    [operating]                              # each quantity: one value, a list, or a range
+    axial_load = "6 kN"                      # force-controlled (> 0) ... or instead:
+    # axial_offset = "20 um"                 # displacement-controlled preload (axial offset)
+    radial_load = "0 kN"                     # >= 0, optional (default 0)
+    tilt_moment = "0 N m"                    # optional
+    misalignment = "0 mrad"                  # optional, inner-ring tilt
+    speed = { from = "500 rpm", to = "4000 rpm", points = 8 }   # inner-ring speed
+    temperature = ["42 degC", "50 degC"]
+
+    [lubrication]
+    mode = "oil_bath"                        # or "minimum_quantity"
+    oil_level = "half_roller"                # or none | shaft_center | flooded | a length in [0, D]
+                                             # above the lowest point of the outer diameter
+
+    [model]
+    fidelity = "default"                     # fast | default | fine; the keys below override it
+    # slices = 30, rib_model = "cell", rib_cells = 32, cage = true,
+    # solution = "quasi_static", hydraulic = "correlation"
+
+    [output]
+    directory = "results/32216_table1"       # optional
+"""
+
+from __future__ import annotations
+
+import copy
+import itertools
+import tomllib
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ._toml import read_toml
+from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
+from .errors import KegelInputError
+from .geometry import BearingGeometry, derive_geometry
+from .units import RPM_TO_RAD_S, parse_quantity
+
+__all__ = [
+    "FIDELITY_PRESETS",
+    "Fidelity",
+    "Lubrication",
+    "OperatingPoint",
+    "Scene",
+    "apply_overrides",
+    "load_scene",
+    "scene_from_dict",
+]
+
+#: Largest speed factor n * d_m accepted [rpm * mm]: about twice the usual limit of
+#: oil-lubricated tapered roller bearings, beyond which kegel's models are not meant to be used.
+MAX_SPEED_FACTOR_RPM_MM = 1.0e6
+#: Temperature range accepted for lubricant data [degC].
+TEMPERATURE_RANGE_DEGC = (-20.0, 150.0)
+
+_ALLOWED: dict[str, set[str]] = {
+    "scene": {"name", "description"},
+    "bearing": {"designation", "material"},
+    "lubricant": {"name"},
+    "operating": {
+        "axial_load", "axial_offset", "radial_load", "tilt_moment", "misalignment", "speed",
+        "temperature",
+    },
+    "lubrication": {"mode", "oil_level"},
+    "model": {"fidelity", "slices", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
+    "output": {"directory"},
+}
+_REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
+_SWEEPABLE = ("axial_load", "axial_offset", "radial_load", "speed", "temperature")
+_OIL_LEVEL_WORDS = ("none", "half_roller", "shaft_center", "flooded")
+
+
+@dataclass(frozen=True)
+class Fidelity:
+    """Model options of a scene (see ``FIDELITY_PRESETS``).
+
+    Attributes
+    ----------
+    name
+        Preset the options started from (``fast``, ``default``, ``fine``), ``+custom`` appended
+        when a key overrides it.
+    slices
+        Slices per roller/raceway contact.
+    rib_model
+        ``"cell"`` (FFT + CG cell model) or ``"hertz"`` (closed-form elliptic contact).
+    rib_cells
+        Cells per side of the rib contact window (cell model).
+    cage
+        Whether the cage and its pocket contacts are modelled.
+    solution
+        ``"quasi_static"`` or ``"dynamic"``.
+    hydraulic
+        ``"none"``, ``"correlation"`` or ``"cfd"``.
+    """
+
+    name: str
+    slices: int
+    rib_model: str
+    rib_cells: int
+    cage: bool
+    solution: str
+    hydraulic: str
+
+    def as_dict(self) -> dict[str, Any]:
+        """Plain dictionary, written next to every result."""
+        return dict(self.__dict__)
+
+
+FIDELITY_PRESETS: dict[str, dict[str, Any]] = {
+    "fast": dict(slices=10, rib_model="hertz", rib_cells=16, cage=False, solution="quasi_static"),
+    "default": dict(slices=30, rib_model="cell", rib_cells=32, cage=True, solution="quasi_static"),
+    "fine": dict(slices=100, rib_model="cell", rib_cells=64, cage=True, solution="quasi_static"),
+}
+_CHOICES = {
+    "rib_model": ("cell", "hertz"),
+    "solution": ("quasi_static", "dynamic"),
+    "hydraulic": ("none", "correlation", "cfd"),
+}
+
+
+@dataclass(frozen=True)
+class Lubrication:
+    """Lubrication of a scene.
+
+    Attributes
+    ----------
+    mode
+        ``"oil_bath"`` or ``"minimum_quantity"``.
+    oil_level_m
+        Height of the oil surface above the lowest point of the bearing's outer diameter
+        (0 for minimum-quantity lubrication, ``D`` for a flooded bearing).
+    oil_level_as_written
+        The value as the scene wrote it.
+    """
+
+    mode: str
+    oil_level_m: float
+    oil_level_as_written: str
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """One operating point of a scene, in SI units.
+
+    Exactly one of ``axial_load_N`` (force-controlled) and ``axial_offset_m``
+    (displacement-controlled preload) is set; the other is ``None``.
+    """
+
+    index: int
+    speed_rad_s: float
+    temperature_K: float
+    radial_load_N: float
+    axial_load_N: float | None
+    axial_offset_m: float | None
+    tilt_moment_Nm: float
+    misalignment_rad: float
+
+    @property
+    def speed_rpm(self) -> float:
+        """Inner-ring speed in rpm."""
+        return self.speed_rad_s / RPM_TO_RAD_S
+
+    @property
+    def temperature_degC(self) -> float:
+        """Temperature in degC."""
+        return self.temperature_K - 273.15
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary; field names carry their units."""
+        return {
+            "index": self.index,
+            "speed_rpm": self.speed_rpm,
+            "speed_rad_s": self.speed_rad_s,
+            "temperature_degC": self.temperature_degC,
+            "temperature_K": self.temperature_K,
+            "axial_load_N": self.axial_load_N,
+            "axial_offset_m": self.axial_offset_m,
+            "radial_load_N": self.radial_load_N,
+            "tilt_moment_Nm": self.tilt_moment_Nm,
+            "misalignment_rad": self.misalignment_rad,
+        }
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene: bearing, lubricant, operating points, lubrication and fidelity."""
+
+    source: str
+    name: str
+    description: str
+    bearing: BearingData
+    material: MaterialData
+    lubricant: LubricantData
+    operating_points: tuple[OperatingPoint, ...]
+    swept: tuple[str, ...]
+    lubrication: Lubrication
+    fidelity: Fidelity
+    output_directory: Path
+    resolved: dict[str, Any] = field(repr=False, compare=False)
+
+    @cached_property
+    def geometry(self) -> BearingGeometry:
+        """The bearing's derived internal geometry."""
+        return derive_geometry(self.bearing, self.material)
+
+
+def _set_dotted(raw: dict[str, Any], dotted: str, value: Any) -> None:
+    parts = dotted.split(".")
+    node = raw
+    for part in parts[:-1]:
+        child = node.setdefault(part, {})
+        if not isinstance(child, dict):
+            raise KegelInputError("--set", dotted, value, f"a key below the table '{part}'")
+        node = child
+    node[parts[-1]] = value
+
+
+def apply_overrides(raw: dict[str, Any], overrides: list[str] | tuple[str, ...]) -> tuple[dict, set[str]]:
+    """Apply ``KEY=VALUE`` overrides (``--set``) to a raw scene dictionary.
+
+    ``VALUE`` is read as a TOML value when it is one (``3``, ``true``, ``["1 kN", "2 kN"]``,
+    ``{from = "500 rpm", to = "4000 rpm", points = 8}``) and as a plain string otherwise
+    (``6.5 kN``), so shell quoting stays simple.
+
+    Returns
+    -------
+    (dict, set of str)
+        The new dictionary (the input is not modified) and the dotted keys that were set.
+    """
+    out = copy.deepcopy(raw)
+    keys: set[str] = set()
+    for item in overrides:
+        key, sep, text = item.partition("=")
+        key = key.strip()
+        if not sep or not key or any(not p for p in key.split(".")):
+            raise KegelInputError("--set", key, item, "KEY=VALUE with a dotted key, e.g. operating.axial_load=\"6.5 kN\"")
+        text = text.strip()
+        try:
+            value: Any = tomllib.loads(f"v = {text}")["v"]
+        except tomllib.TOMLDecodeError:
+            value = text.strip("'\"")
+        _set_dotted(out, key, value)
+        keys.add(key)
+    return out, keys
+
+
+class _Reader:
+    """Validation helper that knows where each value came from."""
+
+    def __init__(self, path: str, overridden: set[str]) -> None:
+        self.path = path
+        self.overridden = overridden
+
+    def src(self, key: str) -> str:
+        return f"{self.path} (--set {key})" if key in self.overridden else self.path
+
+    def error(self, key: str, value: Any, expected: str) -> KegelInputError:
+        return KegelInputError(self.src(key), key, value, expected)
+
+    def quantity(self, value: Any, kind: str, key: str) -> float:
+        return parse_quantity(value, kind, source=self.src(key), key=key)
+
+    def sweep(self, value: Any, kind: str, key: str) -> list[float]:
+        """One value, a list of values, or {from, to, points}: a list of SI floats."""
+        if isinstance(value, str):
+            return [self.quantity(value, kind, key)]
+        if isinstance(value, list):
+            if not value:
+                raise self.error(key, value, "a sweep with at least one point")
+            return [self.quantity(v, kind, f"{key}[{i}]") for i, v in enumerate(value)]
+        if isinstance(value, dict):
+            unknown = set(value) - {"from", "to", "points"}
+            if unknown:
+                raise self.error(f"{key}.{sorted(unknown)[0]}", value[sorted(unknown)[0]],
+                                 "only the keys from, to, points in a range")
+            for k in ("from", "to", "points"):
+                if k not in value:
+                    raise self.error(f"{key}.{k}", None, "a range {from = ..., to = ..., points = N}")
+            points = value["points"]
+            if isinstance(points, bool) or not isinstance(points, int) or points < 1:
+                raise self.error(f"{key}.points", points, "a sweep with at least one point (an integer >= 1)")
+            lo = self.quantity(value["from"], kind, f"{key}.from")
+            hi = self.quantity(value["to"], kind, f"{key}.to")
+            if points == 1:
+                if lo != hi:
+                    raise self.error(f"{key}.points", points, "points >= 2 when from and to differ")
+                return [lo]
+            return [float(v) for v in np.linspace(lo, hi, points)]
+        # a bare number or another type: the quantity parser explains what a value needs
+        return [self.quantity(value, kind, key)]
+
+    def choice(self, table: dict, key: str, prefix: str, choices: tuple[str, ...], default: str | None) -> str:
+        full = f"{prefix}.{key}"
+        if key not in table:
+            if default is None:
+                raise self.error(full, None, f"one of {', '.join(choices)}")
+            return default
+        value = table[key]
+        if value not in choices:
+            raise self.error(full, value, f"one of {', '.join(choices)}")
+        return value
+
+
+def _check_keys(reader: _Reader, raw: dict[str, Any]) -> None:
+    for section, value in raw.items():
+        if section not in _ALLOWED:
+            raise reader.error(section, value if not isinstance(value, dict) else "(table)",
+                               f"a known section ({', '.join(_ALLOWED)})")
+        if not isinstance(value, dict):
+            raise reader.error(section, value, f"a table [{section}]")
+        for key in value:
+            if key not in _ALLOWED[section]:
+                raise reader.error(f"{section}.{key}", value[key],
+                                   f"a known key of [{section}] ({', '.join(sorted(_ALLOWED[section]))})")
+    for section in _REQUIRED_SECTIONS:
+        if section not in raw:
+            raise reader.error(section, None, f"a table [{section}]")
+
+
+def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> Fidelity:
+    preset = model.get("fidelity", "default")
+    if preset not in FIDELITY_PRESETS:
+        raise reader.error("model.fidelity", preset, f"one of {', '.join(FIDELITY_PRESETS)}")
+    opts = dict(FIDELITY_PRESETS[preset])
+    opts["hydraulic"] = "correlation" if lubrication_mode == "oil_bath" else "none"
+    custom = False
+    for key in ("slices", "rib_cells"):
+        if key in model:
+            v = model[key]
+            lo, hi = (2, 1000) if key == "slices" else (4, 512)
+            if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
+                raise reader.error(f"model.{key}", v, f"an integer in [{lo}, {hi}]")
+            opts[key] = v
+            custom = True
+    if "cage" in model:
+        if not isinstance(model["cage"], bool):
+            raise reader.error("model.cage", model["cage"], "true or false")
+        opts["cage"] = model["cage"]
+        custom = True
+    for key, choices in _CHOICES.items():
+        if key in model:
+            opts[key] = reader.choice(model, key, "model", choices, None)
+            custom = True
+    if opts["hydraulic"] != "none" and lubrication_mode == "minimum_quantity":
+        raise reader.error("model.hydraulic", opts["hydraulic"],
+                           "'none' for minimum-quantity lubrication (no oil bath to churn)")
+    return Fidelity(name=preset + ("+custom" if custom else ""), **opts)
+
+
+def _lubrication(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Lubrication:
+    mode = reader.choice(table, "mode", "lubrication", ("oil_bath", "minimum_quantity"), None)
+    D = bearing.outer_diameter_m
+    written = table.get("oil_level", "none" if mode == "minimum_quantity" else None)
+    key = "lubrication.oil_level"
+    if written is None:
+        raise reader.error(key, None, f"an oil level ({', '.join(_OIL_LEVEL_WORDS)}, or a length in [0, D])")
+    if written in _OIL_LEVEL_WORDS:
+        level = {
+            "none": 0.0,
+            # the oil surface at the centre of the lowest roller (the paper's "half roller height")
+            "half_roller": 0.5 * (D - bearing.pitch_diameter_m),
+            "shaft_center": 0.5 * D,
+            "flooded": D,
+        }[written]
+    else:
+        level = reader.quantity(written, "length", key)
+        if not 0.0 <= level <= D:
+            raise reader.error(
+                key, written,
+                f"an oil level in [0, D] = [0, {D * 1e3:g} mm] above the lowest point of the "
+                f"outer diameter of bearing {bearing.designation}",
+            )
+    if mode == "minimum_quantity" and level != 0.0:
+        raise reader.error(key, written, "no oil level (or 'none') for minimum-quantity lubrication")
+    if mode == "oil_bath" and level == 0.0:
+        raise reader.error(key, written, "an oil level > 0 for an oil bath")
+    return Lubrication(mode=mode, oil_level_m=level, oil_level_as_written=str(written))
+
+
+def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData) -> tuple[list[OperatingPoint], tuple[str, ...]]:
+    if ("axial_load" in op) == ("axial_offset" in op):
+        raise reader.error(
+            "operating.axial_load", op.get("axial_load"),
+            "exactly one of axial_load (force-controlled) and axial_offset (displacement-controlled preload)",
+        )
+    for key in ("speed", "temperature"):
+        if key not in op:
+            raise reader.error(f"operating.{key}", None, "a value, a list or a range {from, to, points}")
+
+    kinds = {"axial_load": "force", "axial_offset": "length", "radial_load": "force",
+             "speed": "speed", "temperature": "temperature"}
+    values: dict[str, list[float]] = {}
+    for key, kind in kinds.items():
+        if key in op:
+            values[key] = reader.sweep(op[key], kind, f"operating.{key}")
+    values.setdefault("radial_load", [0.0])
+
+    def check_each(key: str, ok: Any, expected: str, shown: Any) -> None:
+        raw = op[key]
+        for i, v in enumerate(values[key]):
+            if not ok(v):
+                where = f"operating.{key}" if isinstance(raw, str) else f"operating.{key}[{i}]"
+                raise reader.error(where, shown(v, raw, i), expected)
+
+    def as_written(v: float, raw: Any, i: int) -> Any:
+        if isinstance(raw, str):
+            return raw
+        if isinstance(raw, list):
+            return raw[i]
+        return v
+
+    if "axial_load" in values:
+        check_each("axial_load", lambda v: v > 0.0, "a positive axial load (> 0 N); a tapered roller "
+                   "bearing needs axial load to keep its rollers seated", as_written)
+    if "axial_offset" in values:
+        check_each("axial_offset", lambda v: v > 0.0, "a positive axial offset (> 0 m, preload)", as_written)
+    if "radial_load" in op:
+        check_each("radial_load", lambda v: v >= 0.0, "a radial load >= 0 N", as_written)
+    n_max_rpm = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
+    check_each(
+        "speed", lambda v: 0.0 < abs(v) / RPM_TO_RAD_S <= n_max_rpm,
+        f"a non-zero speed with |n| <= {n_max_rpm:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} "
+        f"rpm mm for bearing {bearing.designation})", as_written,
+    )
+    lo, hi = TEMPERATURE_RANGE_DEGC
+    check_each("temperature", lambda v: lo <= v - 273.15 <= hi,
+               f"a temperature in [{lo:g}, {hi:g}] degC", as_written)
+
+    tilt = reader.quantity(op["tilt_moment"], "moment", "operating.tilt_moment") if "tilt_moment" in op else 0.0
+    mis = reader.quantity(op["misalignment"], "angle", "operating.misalignment") if "misalignment" in op else 0.0
+    if abs(mis) > 0.01:
+        raise reader.error("operating.misalignment", op["misalignment"], "|misalignment| <= 10 mrad")
+
+    axial_key = "axial_load" if "axial_load" in values else "axial_offset"
+    order = ("temperature", axial_key, "radial_load", "speed")  # speed varies fastest
+    swept = tuple(k for k in order if len(values[k]) > 1)
+    points = []
+    for i, combo in enumerate(itertools.product(*(values[k] for k in order))):
+        d = dict(zip(order, combo))
+        points.append(
+            OperatingPoint(
+                index=i,
+                speed_rad_s=d["speed"],
+                temperature_K=d["temperature"],
+                radial_load_N=d["radial_load"],
+                axial_load_N=d.get("axial_load"),
+                axial_offset_m=d.get("axial_offset"),
+                tilt_moment_Nm=tilt,
+                misalignment_rad=mis,
+            )
+        )
+    return points, swept
+
+
+def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overridden: set[str] | None = None) -> Scene:
+    """Validate a raw scene dictionary (as read from TOML) and build a :class:`Scene`."""
+    reader = _Reader(str(source), overridden or set())
+    _check_keys(reader, raw)
+
+    meta = raw.get("scene", {})
+    for key in ("name", "description"):
+        if key in meta and not isinstance(meta[key], str):
+            raise reader.error(f"scene.{key}", meta[key], "a string")
+
+    b = raw["bearing"]
+    if "designation" not in b:
+        raise reader.error("bearing.designation", None, "a bearing designation such as \"32216\"")
+    bearing = load_bearing(str(b["designation"]), source=reader.src("bearing.designation"), key="bearing.designation")
+    material = load_material(str(b.get("material", "bearing_steel")), source=reader.src("bearing.material"),
+                             key="bearing.material")
+    lub_table = raw["lubricant"]
+    if "name" not in lub_table:
+        raise reader.error("lubricant.name", None, "a lubricant name such as \"FVA3\"")
+    lubricant = load_lubricant(str(lub_table["name"]), source=reader.src("lubricant.name"), key="lubricant.name")
+
+    points, swept = _operating_points(reader, raw["operating"], bearing)
+    lubrication = _lubrication(reader, raw["lubrication"], bearing)
+    fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
+
+    stem = Path(str(source)).stem if str(source) != "<dict>" else "scene"
+    out = raw.get("output", {}).get("directory", f"results/{stem}")
+    if not isinstance(out, str) or not out:
+        raise reader.error("output.directory", out, "a non-empty path string")
+
+    return Scene(
+        source=str(source),
+        name=meta.get("name", stem),
+        description=meta.get("description", ""),
+        bearing=bearing,
+        material=material,
+        lubricant=lubricant,
+        operating_points=tuple(points),
+        swept=swept,
+        lubrication=lubrication,
+        fidelity=fidelity,
+        output_directory=Path(out),
+        resolved=raw,
+    )
+
+
+def load_scene(path: str | Path, overrides: list[str] | tuple[str, ...] = ()) -> Scene:
+    """Read, override (``--set``) and validate a scene file.
+
+    Parameters
+    ----------
+    path
+        Scene TOML file.
+    overrides
+        ``KEY=VALUE`` strings applied before validation, e.g. ``operating.axial_load=6.5 kN``.
+
+    Raises
+    ------
+    KegelInputError
+        On any invalid input; the message names the file, key, value and expectation.
+    """
+    path = Path(path)
+    raw = read_toml(path)
+    raw, keys = apply_overrides(raw, overrides)
+    return scene_from_dict(raw, source=path, overridden=keys)
+
+
+def with_fidelity(scene: Scene, **changes: Any) -> Scene:
+    """A copy of ``scene`` with some fidelity options changed (for fidelity studies)."""
+    return replace(scene, fidelity=replace(scene.fidelity, **changes))
+

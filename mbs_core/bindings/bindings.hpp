@@ -1,0 +1,9 @@
+// One binding file per C++ area; module.cpp assembles them into kegel._core.
+#pragma once
+
+#include <nanobind/nanobind.h>
+
+namespace kegel::python {
+void bind_lubricant(nanobind::module_& m);
+void bind_material(nanobind::module_& m);
+}  // namespace kegel::python

@@ -1,0 +1,45 @@
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+EXAMPLES = REPO / "examples"
+SHARED_REFERENCE = REPO.parent / "shared" / "reference"
+
+
+def run_kegel(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    """Run the installed `kegel` command (the entry point users call)."""
+    exe = Path(sys.executable).with_name("kegel")
+    return subprocess.run([str(exe), *args], capture_output=True, text=True, cwd=cwd, timeout=120)
+
+
+@pytest.fixture
+def kegel_json():
+    def call(*args: str) -> dict:
+        res = run_kegel(*args, "--format", "json")
+        assert res.returncode == 0, res.stderr
+        return json.loads(res.stdout)
+
+    return call
+
+
+@pytest.fixture
+def write_scene(tmp_path):
+    """Write a scene file from the text of a valid base scene with replacements."""
+    base = (EXAMPLES / "32216_table1.toml").read_text()
+
+    def make(text: str | None = None, *, replace: dict[str, str] | None = None, name: str = "scene.toml") -> Path:
+        body = base if text is None else text
+        for old, new in (replace or {}).items():
+            assert old in body, old
+            body = body.replace(old, new)
+        path = tmp_path / name
+        path.write_text(body)
+        return path
+
+    return make

@@ -1,0 +1,173 @@
+"""Every bad-input case of a scene gets an error naming the file, the key, the value and the
+expectation (issue "Foundation", item 5)."""
+
+from __future__ import annotations
+
+import pytest
+
+import kegel
+from conftest import run_kegel
+
+
+def expect_error(path, *fragments, overrides=()):
+    with pytest.raises(kegel.KegelInputError) as info:
+        kegel.load_scene(path, overrides)
+    msg = str(info.value)
+    assert str(path) in msg, msg
+    for f in fragments:
+        assert f in msg, f"{f!r} not in {msg!r}"
+    return info.value
+
+
+def test_unknown_bearing(write_scene):
+    p = write_scene(replace={'designation = "32216"': 'designation = "32217"'})
+    e = expect_error(p, "bearing.designation", "'32217'", "a known bearing", "32208", "32216")
+    assert e.key == "bearing.designation"
+
+
+def test_unknown_oil(write_scene):
+    p = write_scene(replace={'name = "FVA3"': 'name = "ISO VG 46"'})
+    expect_error(p, "lubricant.name", "'ISO VG 46'", "a known lubricant", "FVA3")
+
+
+def test_missing_key(write_scene):
+    p = write_scene(replace={'temperature = ["42 degC", "50 degC"]\n': ""})
+    e = expect_error(p, "missing key 'operating.temperature'", "expected")
+    assert e.value is None
+
+
+def test_missing_section(write_scene):
+    p = write_scene(replace={'[lubricant]\nname = "FVA3"\n': ""})
+    expect_error(p, "missing key 'lubricant'", "a table [lubricant]")
+
+
+def test_wrong_unit_for_load(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': 'axial_load = "6 kg"'})
+    expect_error(p, "operating.axial_load", "'6 kg'", "a force", "e.g. '6 kN'", "[mass]")
+
+
+def test_number_without_unit(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': "axial_load = 6000"})
+    expect_error(p, "operating.axial_load", "6000", "a force with its unit")
+
+
+@pytest.mark.parametrize("value", ['"0 kN"', '"-6 kN"'])
+def test_zero_or_negative_axial_load(write_scene, value):
+    p = write_scene(replace={'axial_load = "6 kN"': f"axial_load = {value}"})
+    expect_error(p, "operating.axial_load", value.strip('"'), "a positive axial load")
+
+
+def test_negative_radial_load_in_sweep(write_scene):
+    p = write_scene(replace={'radial_load = "0 kN"': 'radial_load = ["1 kN", "-2 kN"]'})
+    expect_error(p, "operating.radial_load[1]", "'-2 kN'", "a radial load >= 0")
+
+
+def test_axial_load_and_offset_together(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': 'axial_load = "6 kN"\naxial_offset = "20 um"'})
+    expect_error(p, "operating.axial_load", "exactly one of axial_load")
+
+
+@pytest.mark.parametrize("level", ['"150 mm"', '"-1 mm"'])
+def test_oil_level_outside_0_D(write_scene, level):
+    p = write_scene(replace={'oil_level = "half_roller"': f"oil_level = {level}"})
+    expect_error(p, "lubrication.oil_level", level.strip('"'), "[0, D] = [0, 140 mm]")
+
+
+def test_oil_level_wrong_unit(write_scene):
+    p = write_scene(replace={'oil_level = "half_roller"': 'oil_level = "3 kN"'})
+    expect_error(p, "lubrication.oil_level", "'3 kN'", "a length")
+
+
+@pytest.mark.parametrize("speed", ['"10000 rpm"', '"0 rpm"', '{ from = "500 rpm", to = "20000 rpm", points = 3 }'])
+def test_speed_out_of_range(write_scene, speed):
+    p = write_scene(replace={'speed = { from = "500 rpm", to = "4000 rpm", points = 8 }': f"speed = {speed}"})
+    expect_error(p, "operating.speed", "a non-zero speed with |n| <= 9217 rpm", "32216")
+
+
+def test_speed_wrong_unit(write_scene):
+    p = write_scene(replace={'speed = { from = "500 rpm", to = "4000 rpm", points = 8 }': 'speed = "2000 m/s"'})
+    expect_error(p, "operating.speed", "'2000 m/s'", "a rotational speed")
+
+
+@pytest.mark.parametrize(
+    "sweep, key",
+    [
+        ("[]", "operating.speed"),
+        ('{ from = "500 rpm", to = "4000 rpm", points = 0 }', "operating.speed.points"),
+        ('{ from = "500 rpm", points = 4 }', "operating.speed.to"),
+    ],
+)
+def test_sweep_with_no_points(write_scene, sweep, key):
+    p = write_scene(replace={'speed = { from = "500 rpm", to = "4000 rpm", points = 8 }': f"speed = {sweep}"})
+    e = expect_error(p, key)
+    assert "point" in e.expected or "range" in e.expected
+
+
+def test_temperature_out_of_range(write_scene):
+    p = write_scene(replace={'temperature = ["42 degC", "50 degC"]': 'temperature = "200 degC"'})
+    expect_error(p, "operating.temperature", "'200 degC'", "[-20, 150] degC")
+
+
+def test_malformed_file_points_at_line_and_column(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': 'axial_load = = "6 kN"'})
+    e = expect_error(p, "well-formed TOML")
+    text = p.read_text().splitlines()
+    assert e.line is not None and "axial_load = =" in text[e.line - 1]
+    assert f"{p}:{e.line}:{e.column}" in str(e)
+
+
+def test_missing_file(tmp_path):
+    expect_error(tmp_path / "nope.toml", "an existing TOML file")
+
+
+def test_unknown_key_is_rejected(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': 'axial_load = "6 kN"\naxial_lod = "1 kN"'})
+    expect_error(p, "operating.axial_lod", "a known key of [operating]", "axial_load")
+
+
+def test_unknown_choice(write_scene):
+    p = write_scene(replace={'mode = "oil_bath"': 'mode = "grease"'})
+    expect_error(p, "lubrication.mode", "'grease'", "oil_bath, minimum_quantity")
+
+
+def test_bad_fidelity_option(write_scene):
+    p = write_scene(replace={'fidelity = "default"': 'fidelity = "default"\nslices = 1'})
+    expect_error(p, "model.slices", "an integer in [2, 1000]")
+
+
+def test_hydraulic_loss_without_oil_bath(write_scene):
+    p = write_scene(replace={'mode = "oil_bath"\noil_level = "half_roller"': 'mode = "minimum_quantity"',
+                             'fidelity = "default"': 'hydraulic = "cfd"'})
+    expect_error(p, "model.hydraulic", "'none' for minimum-quantity")
+
+
+def test_override_errors_name_the_override(write_scene):
+    p = write_scene()
+    expect_error(p, "(--set operating.axial_load)", "'6 kg'", overrides=["operating.axial_load=6 kg"])
+    expect_error(p, "operating.nonsense", overrides=["operating.nonsense=1"])
+
+
+def test_malformed_override():
+    with pytest.raises(kegel.KegelInputError, match="KEY=VALUE"):
+        kegel.scene.apply_overrides({}, ["operating.axial_load"])
+
+
+def test_cli_reports_error_and_exit_status_2(write_scene):
+    p = write_scene(replace={'axial_load = "6 kN"': 'axial_load = "6 kg"'})
+    for cmd in ("check", "run"):
+        res = run_kegel(cmd, str(p))
+        assert res.returncode == 2
+        assert res.stdout == ""
+        line = res.stderr.strip()
+        assert line.startswith("kegel: error: ") and str(p) in line and "operating.axial_load" in line
+        assert "Traceback" not in res.stderr
+
+
+def test_bad_bearing_data_file_names_file_and_key(tmp_path):
+    src = (kegel.data.DATA_DIR / "bearings" / "32216.toml").read_text()
+    bad = tmp_path / "bad_bearing.toml"
+    bad.write_text(src.replace("roller_count = 16", "roller_count = -16"))
+    with pytest.raises(kegel.KegelInputError) as info:
+        kegel.load_bearing(str(bad))
+    assert str(bad) in str(info.value) and "published.roller_count" in str(info.value)
+    assert "-16" in str(info.value) and "> 0" in str(info.value)
