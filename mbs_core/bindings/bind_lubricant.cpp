@@ -5,6 +5,18 @@ namespace nb = nanobind;
 using namespace nb::literals;
 
 namespace kegel::python {
+namespace {
+
+using TemperatureFunction = double (*)(const Lubricant&, double) noexcept;
+
+/// Python entry point of a temperature-only property: check the temperature, then evaluate.
+template <TemperatureFunction F>
+double checked(const Lubricant& lub, double temperature_K) {
+  check_temperature(lub, temperature_K);
+  return F(lub, temperature_K);
+}
+
+}  // namespace
 
 void bind_lubricant(nb::module_& m) {
   nb::class_<LubricantParameters>(m, "LubricantParameters",
@@ -28,13 +40,8 @@ void bind_lubricant(nb::module_& m) {
       .def_prop_ro("vogel_pole_K", &Lubricant::vogel_pole_K);
 
   // The Python entry points check their arguments (ValueError) before the noexcept kernels.
-  m.def(
-      "viscosity_ambient_Pas",
-      [](const Lubricant& l, double T) {
-        check_temperature(l, T);
-        return viscosity_ambient_Pas(l, T);
-      },
-      "lubricant"_a, "temperature_K"_a, "Eq. 8 (Vogel): dynamic viscosity at ambient pressure.");
+  m.def("viscosity_ambient_Pas", &checked<&viscosity_ambient_Pas>, "lubricant"_a, "temperature_K"_a,
+        "Eq. 8 (Vogel): dynamic viscosity at ambient pressure.");
   m.def(
       "viscosity_Pas",
       [](const Lubricant& l, double T, double p) {
@@ -43,27 +50,12 @@ void bind_lubricant(nb::module_& m) {
       },
       "lubricant"_a, "temperature_K"_a, "pressure_Pa"_a,
       "Eq. 7 (Dicke): dynamic viscosity at pressure.");
-  m.def(
-      "pressure_viscosity_coefficient_per_Pa",
-      [](const Lubricant& l, double T) {
-        check_temperature(l, T);
-        return pressure_viscosity_coefficient_per_Pa(l, T);
-      },
-      "lubricant"_a, "temperature_K"_a, "alpha_p0 = d ln(eta)/dp at p = 0, from Eq. 7.");
-  m.def(
-      "density_kg_m3",
-      [](const Lubricant& l, double T) {
-        check_temperature(l, T);
-        return density_kg_m3(l, T);
-      },
-      "lubricant"_a, "temperature_K"_a, "Density, linear in temperature.");
-  m.def(
-      "kinematic_viscosity_m2_s",
-      [](const Lubricant& l, double T) {
-        check_temperature(l, T);
-        return kinematic_viscosity_m2_s(l, T);
-      },
-      "lubricant"_a, "temperature_K"_a, "Kinematic viscosity at ambient pressure.");
+  m.def("pressure_viscosity_coefficient_per_Pa", &checked<&pressure_viscosity_coefficient_per_Pa>,
+        "lubricant"_a, "temperature_K"_a, "alpha_p0 = d ln(eta)/dp at p = 0, from Eq. 7.");
+  m.def("density_kg_m3", &checked<&density_kg_m3>, "lubricant"_a, "temperature_K"_a,
+        "Density, linear in temperature.");
+  m.def("kinematic_viscosity_m2_s", &checked<&kinematic_viscosity_m2_s>, "lubricant"_a,
+        "temperature_K"_a, "Kinematic viscosity at ambient pressure.");
 }
 
 }  // namespace kegel::python
