@@ -12,4 +12,5 @@ NB_MODULE(_core, m) {
   m.def("sundials_version", &kegel::sundials_version, "Version of the linked SUNDIALS library.");
   kegel::python::bind_lubricant(m);
   kegel::python::bind_material(m);
+  kegel::python::bind_tribology(m);
 }

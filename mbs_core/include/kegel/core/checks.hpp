@@ -16,7 +16,7 @@ namespace kegel::detail {
 [[noreturn]] inline void fail(const char* owner, const char* field, double value,
                               const std::string& expected) {
   std::ostringstream os;
-  os.precision(17);
+  os.precision(15);
   os << owner << "." << field << " = " << value << ": expected " << expected;
   throw std::invalid_argument(os.str());
 }
@@ -37,7 +37,7 @@ inline void require_range(const char* owner, const char* field, double value, do
                           double hi) {
   if (!std::isfinite(value) || value < lo || value > hi) {
     std::ostringstream os;
-    os.precision(17);
+    os.precision(15);
     os << "a finite value in [" << lo << ", " << hi << "]";
     fail(owner, field, value, os.str());
   }
