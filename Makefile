@@ -69,6 +69,9 @@ test-python: $(STAMP)/install
 	$(PY) -m pytest -ra
 
 bench: setup
+	cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DKEGEL_BUILD_BENCHMARKS=ON -DKEGEL_BUILD_PYTHON=OFF
+	cmake --build build/bench -j 2
+	build/bench/benchmarks/cpp/bench_slice
 	$(PY) benchmarks/run_all.py
 
 clean:

@@ -6,24 +6,9 @@
 #include <stdexcept>
 
 #include "kegel/core/lubricant.hpp"
+#include "test_data.hpp"
 
 namespace {
-
-kegel::LubricantParameters fva3() {
-  kegel::LubricantParameters p;
-  p.vogel_K_Pas = 0.062e-3;
-  p.vogel_B_K = 1021.7;
-  p.vogel_C_degC = 101.5517;
-  p.dicke_a1_bar = 327.7918;
-  p.dicke_a2_bar_per_K = 2.9862;
-  p.dicke_b1 = 4.419e-3;
-  p.dicke_b2_per_K = 3.0115e-4;
-  p.density_ref_kg_m3 = 887.6;
-  p.density_ref_temperature_K = 288.15;
-  p.density_slope_kg_m3_K = -0.6;  // -6e-4 g/(ml K)
-  p.thermal_conductivity_W_mK = 0.134;
-  return p;
-}
 
 double K(double degC) { return degC + 273.15; }
 
@@ -34,7 +19,7 @@ void expect_rel(double value, double ref, double rel) {
 }  // namespace
 
 TEST(Lubricant, KnownValuesFVA3) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   // theta, eta0 [mPa s], rho [kg/m3], nu [mm2/s], alpha_p0 [1/GPa]; tolerance 0.5 %.
   struct Row { double theta, eta0, rho, nu, alpha; };
   for (const Row& r : {Row{40, 84.5, 872.6, 96.9, 22.4}, Row{50, 52.5, 866.6, 60.6, 21.0},
@@ -49,7 +34,7 @@ TEST(Lubricant, KnownValuesFVA3) {
 }
 
 TEST(Lubricant, HandCalculationAt50C) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   // Eq. 8 by hand: 0.062 mPa s * exp(1021.7 / 151.5517).
   const double eta0 = 0.062e-3 * std::exp(1021.7 / (50.0 + 101.5517));
   EXPECT_DOUBLE_EQ(kegel::viscosity_ambient_Pas(lub, K(50)), eta0);
@@ -59,7 +44,7 @@ TEST(Lubricant, HandCalculationAt50C) {
 }
 
 TEST(Lubricant, DickeReducesToVogelAtZeroPressure) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   for (double theta : {20.0, 50.0, 120.0}) {
     EXPECT_DOUBLE_EQ(kegel::viscosity_Pas(lub, K(theta), 0.0),
                      kegel::viscosity_ambient_Pas(lub, K(theta)));
@@ -67,7 +52,7 @@ TEST(Lubricant, DickeReducesToVogelAtZeroPressure) {
 }
 
 TEST(Lubricant, PressureViscosityCoefficientMatchesFiniteDifference) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   for (double theta : {30.0, 50.0, 90.0}) {
     const double T = K(theta);
     const double dp = 1e3;  // Pa
@@ -78,7 +63,7 @@ TEST(Lubricant, PressureViscosityCoefficientMatchesFiniteDifference) {
 }
 
 TEST(Lubricant, ViscosityFallsWithTemperatureAndRisesWithPressure) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   double last = INFINITY;
   for (double theta = -20; theta <= 150; theta += 10) {
     const double eta = kegel::viscosity_ambient_Pas(lub, K(theta));
@@ -89,7 +74,7 @@ TEST(Lubricant, ViscosityFallsWithTemperatureAndRisesWithPressure) {
 }
 
 TEST(Lubricant, RejectsBadParametersWithNamedField) {
-  auto p = fva3();
+  auto p = kegel::test::fva3();
   p.vogel_K_Pas = -1.0;
   try {
     kegel::Lubricant lub(p);
@@ -98,13 +83,13 @@ TEST(Lubricant, RejectsBadParametersWithNamedField) {
     EXPECT_NE(std::string(e.what()).find("vogel_K_Pas"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("> 0"), std::string::npos) << e.what();
   }
-  p = fva3();
+  p = kegel::test::fva3();
   p.thermal_conductivity_W_mK = NAN;
   EXPECT_THROW(kegel::Lubricant{p}, std::invalid_argument);
 }
 
 TEST(Lubricant, RejectsTemperatureBelowVogelPole) {
-  const kegel::Lubricant lub(fva3());
+  const kegel::Lubricant lub(kegel::test::fva3());
   EXPECT_THROW(kegel::check_temperature(lub, K(-101.6)), std::invalid_argument);
   EXPECT_THROW(kegel::check_temperature(lub, NAN), std::invalid_argument);
   EXPECT_NO_THROW(kegel::check_temperature(lub, K(50)));

@@ -1,0 +1,137 @@
+#include "kegel/core/slice.hpp"
+
+#include <cmath>
+
+#include "kegel/core/checks.hpp"
+
+namespace kegel {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kPaPerBar = 1.0e5;
+}  // namespace
+
+FrictionParameters::FrictionParameters(const Values& v) : v_(v) {
+  using namespace detail;
+  constexpr const char* o = "FrictionParameters";
+  require_nonnegative(o, "tau_L0_Pa", v.tau_L0_Pa);
+  require_nonnegative(o, "gamma_L", v.gamma_L);
+  if (!(v.tau_L0_Pa + v.gamma_L > 0.0)) fail(o, "gamma_L", v.gamma_L, "tau_L0_Pa + gamma_L > 0");
+  require_positive(o, "mu_s", v.mu_s);
+  require_positive(o, "mu_d", v.mu_d);
+  require_positive(o, "v_s_m_s", v.v_s_m_s);
+  if (!(std::isfinite(v.v_d_m_s) && v.v_d_m_s > v.v_s_m_s)) fail(o, "v_d_m_s", v.v_d_m_s, "a value > v_s_m_s");
+  require_nonnegative(o, "c_r", v.c_r);
+  require_positive(o, "e_r", v.e_r);
+  require_nonnegative(o, "a_v", v.a_v);
+  require_nonnegative(o, "d_max_Ns_m", v.d_max_Ns_m);
+  require_positive(o, "delta_max_m", v.delta_max_m);
+  law_ = tribology::CubicFrictionLaw{v.mu_s, v.mu_d, v.v_s_m_s, v.v_d_m_s};
+}
+
+SurfacePair::SurfacePair(double sigma, double B, double C, double E) : sigma_(sigma), B_(B), C_(C), E_(E) {
+  using namespace detail;
+  require_positive("SurfacePair", "sigma_m", sigma);
+  require_positive("SurfacePair", "zhou_hoeprich_B", B);
+  require_positive("SurfacePair", "zhou_hoeprich_C", C);
+  require_positive("SurfacePair", "E_reduced_Pa", E);
+}
+
+ContactLubricantState make_contact_lubricant_state(const Lubricant& lub, double T) {
+  check_temperature(lub, T);
+  const auto& q = lub.parameters();
+  const double theta = T - 273.15;
+  ContactLubricantState s;
+  s.temperature_K = T;
+  s.eta0_Pas = viscosity_ambient_Pas(lub, T);
+  s.alpha_p_1_Pa = pressure_viscosity_coefficient_per_Pa(lub, T);
+  s.deta_dtheta_Pas_K =
+      tribology::vogel_viscosity_derivative_Pas_per_K(q.vogel_K_Pas, q.vogel_B_K, q.vogel_C_degC, theta);
+  s.thermal_conductivity_W_mK = q.thermal_conductivity_W_mK;
+  s.dicke_a_bar = q.dicke_a1_bar + q.dicke_a2_bar_per_K * theta;
+  s.dicke_b = q.dicke_b1 + q.dicke_b2_per_K * theta;
+  if (!(s.dicke_a_bar > 0.0)) {
+    detail::fail("Lubricant", "temperature_K", T, "a temperature with a1 + a2*theta > 0 (Eq. 7)");
+  }
+  if (s.dicke_b < 0.0) {
+    detail::fail("Lubricant", "temperature_K", T,
+                 "a temperature with b1 + b2*theta >= 0, so that Eq. 7 stays finite at any pressure");
+  }
+  return s;
+}
+
+void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLubricantState& lub,
+                    const FrictionParameters& fp, SliceResult& out) noexcept {
+  out = SliceResult{};
+  if (!(in.load_N > 0.0) || !(in.width_m > 0.0)) return;
+  out.in_contact = true;
+  const auto& v = fp.values();
+  const double E = sp.E_reduced_Pa();
+  const double Q = in.load_N;
+  const double w = Q / in.width_m;
+  const double R = in.reduced_radius_m;
+
+  // Hertz line contact of the slice (the A_Hertz of Eq. 5, the b of Eq. 20)
+  const double b = std::sqrt(8.0 * w * R / (kPi * E));
+  out.half_width_m = b;
+  out.max_pressure_Pa = 2.0 * w / (kPi * b);
+  out.mean_pressure_Pa = 0.5 * w / b;
+  out.area_m2 = 2.0 * b * in.width_m;
+
+  // Kinematics
+  const double urx = in.u1_x_m_s - in.u2_x_m_s;
+  const double ury = in.u1_y_m_s - in.u2_y_m_s;
+  const double us = std::hypot(urx, ury);
+  const double uav = 0.5 * std::abs(in.u1_x_m_s + in.u2_x_m_s);
+  out.sliding_speed_m_s = us;
+  out.entrainment_speed_m_s = uav;
+
+  // Film: Moes (line contact) with the Zhu-Cheng thermal factor (Eq. 11-14)
+  if (uav > 0.0) {
+    out.film_isothermal_m = tribology::moes_line_film_thickness_m(lub.eta0_Pas, 2.0 * uav, R, w,
+                                                                  lub.alpha_p_1_Pa, E);
+    out.thermal_factor = tribology::zhu_cheng_factor(out.max_pressure_Pa, E, us, 2.0 * uav,
+                                                     lub.deta_dtheta_Pas_K, uav,
+                                                     lub.thermal_conductivity_W_mK);
+    out.film_m = out.thermal_factor * out.film_isothermal_m;
+  }
+  out.Lambda = tribology::film_parameter(out.film_m, sp.sigma_m());  // Eq. 30
+  const double phi = tribology::asperity_load_ratio(out.Lambda, sp.B(), sp.C());  // Eq. 29
+  out.phi = phi;
+
+  // Lubricant sliding: Dicke viscosity and limiting shear at the mean pressure (Eq. 4-7, 10)
+  const double p_bar = out.mean_pressure_Pa / kPaPerBar;
+  out.eta_contact_Pas = lub.eta0_Pas * std::exp(p_bar / (lub.dicke_a_bar + lub.dicke_b * p_bar));
+  out.tau_L_Pa = tribology::limiting_shear_stress_Pa(v.tau_L0_Pa, v.gamma_L, out.mean_pressure_Pa);
+  if (out.film_m > 0.0) {
+    out.tau_ehl_Pa = tribology::bair_winer_shear_stress_Pa(out.eta_contact_Pas, us, out.film_m, out.tau_L_Pa);
+  }
+  // Solid sliding (Eq. 21-28)
+  out.mu_solid = tribology::cubic_friction_coefficient(fp.cubic_law(), us);
+
+  // Mixed friction (Eq. 36), directed against the sliding velocity of the roller
+  const double f_ehl = (1.0 - phi) * out.tau_ehl_Pa * out.area_m2;
+  const double f_solid = phi * out.mu_solid * Q;
+  if (us > 0.0) {
+    const double ex = urx / us, ey = ury / us;
+    out.F_ehl_sliding_N[0] = -f_ehl * ex;
+    out.F_ehl_sliding_N[1] = -f_ehl * ey;
+    out.F_solid_sliding_N[0] = -f_solid * ex;
+    out.F_solid_sliding_N[1] = -f_solid * ey;
+    out.P_ehl_sliding_W = f_ehl * us;
+    out.P_solid_sliding_W = f_solid * us;
+  }
+
+  // Rolling resistance: EHL (Eq. 16-18), solid (Eq. 19), hysteresis (Eq. 20)
+  if (uav > 0.0) {
+    out.F_ehl_rolling_N = (1.0 - phi) * tribology::biboulet_houpert_rolling_force_N(
+                                            lub.eta0_Pas, uav, R, in.width_m, Q, E);
+  }
+  out.M_solid_rolling_Nm = phi * tribology::solid_rolling_moment_Nm(v.c_r, v.e_r, Q);
+  out.M_hysteresis_Nm = tribology::hysteresis_moment_Nm(Q, v.a_v, b);
+
+  // Damping (Eq. 1-3): approach velocity positive when the bodies move together
+  out.F_damping_N = -tribology::damping_force_N(in.normal_velocity_m_s, in.penetration_m,
+                                                v.d_max_Ns_m, v.delta_max_m);
+}
+
+}  // namespace kegel

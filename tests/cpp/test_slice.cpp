@@ -1,0 +1,157 @@
+// Per-slice evaluation: hand calculations, limits, symmetry and the mechanism breakdown.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kegel/core/slice.hpp"
+#include "test_data.hpp"
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+kegel::FrictionParameters::Values params() {
+  kegel::FrictionParameters::Values v;
+  v.tau_L0_Pa = 0.0;
+  v.gamma_L = 0.06;
+  v.mu_s = 0.1;
+  v.mu_d = 0.1;
+  v.v_s_m_s = 1e-3;
+  v.v_d_m_s = 2e-3;
+  v.c_r = 5e-6;
+  v.e_r = 1.0;
+  v.a_v = 0.007;
+  v.d_max_Ns_m = 100.0;
+  v.delta_max_m = 1e-6;
+  return v;
+}
+
+struct Fixture : ::testing::Test {
+  kegel::Lubricant lub{kegel::test::fva3()};
+  kegel::ContactLubricantState state = kegel::make_contact_lubricant_state(lub, 323.15);
+  kegel::FrictionParameters fp{params()};
+  kegel::SurfacePair sp{0.16e-6, 2.32, 0.97, 210e9 / 0.91};
+
+  kegel::SliceInput slice(double Q, double u1, double u2) const {
+    kegel::SliceInput in;
+    in.load_N = Q;
+    in.width_m = 0.7e-3;  // 30 slices over 20.7 mm
+    in.reduced_radius_m = 7.5e-3;
+    in.u1_x_m_s = u1;
+    in.u2_x_m_s = u2;
+    return in;
+  }
+  kegel::SliceResult eval(const kegel::SliceInput& in) const {
+    kegel::SliceResult r;
+    kegel::evaluate_slice(in, sp, state, fp, r);
+    return r;
+  }
+};
+}  // namespace
+
+TEST_F(Fixture, UnloadedSliceIsOutOfContact) {
+  const auto r = eval(slice(0.0, 5.0, 5.1));
+  EXPECT_FALSE(r.in_contact);
+  EXPECT_EQ(r.F_ehl_sliding_N[0], 0.0);
+  EXPECT_EQ(r.M_hysteresis_Nm, 0.0);
+  EXPECT_EQ(r.film_m, 0.0);
+}
+
+TEST_F(Fixture, HertzAndFilmByHand) {
+  const double Q = 50.0, u = 5.0;
+  const auto r = eval(slice(Q, u, u));
+  const double E = 210e9 / 0.91, w = Q / 0.7e-3, R = 7.5e-3;
+  const double b = std::sqrt(8 * w * R / (kPi * E));
+  EXPECT_NEAR(r.half_width_m, b, 1e-15);
+  EXPECT_NEAR(r.max_pressure_Pa, 2 * w / (kPi * b), 1e-6 * r.max_pressure_Pa);
+  EXPECT_NEAR(r.mean_pressure_Pa, kPi / 4 * r.max_pressure_Pa, 1e-9 * r.max_pressure_Pa);
+  const double h = kegel::tribology::moes_line_film_thickness_m(state.eta0_Pas, 2 * u, R, w, state.alpha_p_1_Pa, E);
+  EXPECT_DOUBLE_EQ(r.film_isothermal_m, h);
+  EXPECT_GT(r.thermal_factor, 0.0);
+  EXPECT_LT(r.thermal_factor, 1.0);
+  EXPECT_DOUBLE_EQ(r.film_m, r.thermal_factor * h);
+  EXPECT_DOUBLE_EQ(r.Lambda, r.film_m / 0.16e-6);
+  EXPECT_DOUBLE_EQ(r.phi, std::exp(-2.32 * std::pow(r.Lambda, 0.97)));
+  // Johnson hysteresis with the slice half-width
+  EXPECT_NEAR(r.M_hysteresis_Nm, Q * 0.007 * 2 * b / (3 * kPi), 1e-18);
+}
+
+TEST_F(Fixture, PureRollingHasNoSlidingFriction) {
+  const auto r = eval(slice(50.0, 5.0, 5.0));
+  EXPECT_EQ(r.sliding_speed_m_s, 0.0);
+  EXPECT_EQ(r.F_ehl_sliding_N[0], 0.0);
+  EXPECT_EQ(r.F_solid_sliding_N[0], 0.0);
+  EXPECT_EQ(r.P_ehl_sliding_W + r.P_solid_sliding_W, 0.0);
+  EXPECT_GT(r.F_ehl_rolling_N, 0.0);
+  EXPECT_GT(r.M_hysteresis_Nm, 0.0);
+}
+
+TEST_F(Fixture, SlidingForcesOpposeSlipAndAreOdd) {
+  const auto a = eval(slice(50.0, 5.05, 4.95));
+  const auto b = eval(slice(50.0, 4.95, 5.05));
+  EXPECT_LT(a.F_ehl_sliding_N[0], 0.0);  // roller faster than ring: friction brakes the roller
+  EXPECT_DOUBLE_EQ(a.F_ehl_sliding_N[0], -b.F_ehl_sliding_N[0]);
+  EXPECT_DOUBLE_EQ(a.F_solid_sliding_N[0], -b.F_solid_sliding_N[0]);
+  // dissipated power equals -F . u_rel, and is positive
+  const double urel = 0.1;
+  EXPECT_NEAR(a.P_ehl_sliding_W, -a.F_ehl_sliding_N[0] * urel, 1e-12 * a.P_ehl_sliding_W);
+  EXPECT_GT(a.P_ehl_sliding_W, 0.0);
+}
+
+TEST_F(Fixture, LateralSlipActsAlongTheContactLine) {
+  auto in = slice(50.0, 5.0, 5.0);
+  in.u1_y_m_s = 0.2;  // skew: the roller slides along its contact line
+  const auto r = eval(in);
+  EXPECT_NEAR(r.F_ehl_sliding_N[0], 0.0, 1e-15);
+  EXPECT_LT(r.F_ehl_sliding_N[1], 0.0);
+}
+
+TEST_F(Fixture, TractionSaturatesAtLimitingShear) {
+  const auto r = eval(slice(200.0, 6.0, 4.0));  // large slip: tau -> tau_L
+  EXPECT_NEAR(r.tau_ehl_Pa, r.tau_L_Pa, 1e-6 * r.tau_L_Pa);
+  EXPECT_NEAR(r.tau_L_Pa, 0.06 * r.mean_pressure_Pa, 1e-6 * r.tau_L_Pa);
+  EXPECT_NEAR(-r.F_ehl_sliding_N[0], (1 - r.phi) * r.tau_L_Pa * r.area_m2, 1e-6 * r.tau_L_Pa * r.area_m2);
+}
+
+TEST_F(Fixture, NoEntrainmentMeansSolidContact) {
+  const auto r = eval(slice(50.0, 0.05, -0.05));  // opposite surface speeds: u_av = 0
+  EXPECT_EQ(r.film_m, 0.0);
+  EXPECT_EQ(r.Lambda, 0.0);
+  EXPECT_DOUBLE_EQ(r.phi, 1.0);
+  EXPECT_EQ(r.F_ehl_rolling_N, 0.0);
+  EXPECT_NEAR(-r.F_solid_sliding_N[0], 0.1 * 50.0, 1e-12);  // mu_d Q
+  EXPECT_NEAR(r.M_solid_rolling_Nm, 5e-6 * 50.0, 1e-15);
+}
+
+TEST_F(Fixture, MixedWeightingMovesWithFilm) {
+  // thicker film at higher speed: phi falls, the solid share falls
+  const auto slow = eval(slice(50.0, 0.2, 0.19));
+  const auto fast = eval(slice(50.0, 8.0, 7.99));
+  EXPECT_GT(slow.phi, fast.phi);
+  EXPECT_GT(fast.Lambda, slow.Lambda);
+  EXPECT_GE(slow.phi, 0.0);
+  EXPECT_LE(slow.phi, 1.0);
+}
+
+TEST_F(Fixture, DampingOpposesApproach) {
+  auto in = slice(50.0, 5.0, 5.0);
+  in.penetration_m = 2e-6;
+  in.normal_velocity_m_s = 0.01;  // approaching
+  EXPECT_NEAR(eval(in).F_damping_N, 100.0 * 0.01, 1e-12);
+  in.penetration_m = 0.5e-6;
+  EXPECT_NEAR(eval(in).F_damping_N, 50.0 * 0.01, 1e-12);
+}
+
+TEST(SliceParameters, ValidationNamesTheField) {
+  auto v = params();
+  v.v_d_m_s = 0.5e-3;
+  try {
+    kegel::FrictionParameters fp(v);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("v_d_m_s"), std::string::npos);
+  }
+  EXPECT_THROW(kegel::SurfacePair(0.0, 2.3, 0.97, 2e11), std::invalid_argument);
+  const kegel::Lubricant lub{kegel::test::fva3()};
+  EXPECT_THROW(kegel::make_contact_lubricant_state(lub, 100.0), std::invalid_argument);
+}
