@@ -25,6 +25,7 @@ from .errors import KegelInputError
 from .geometry import BearingGeometry, apex_residual, derive_geometry, envelope_violations
 from .lubricant import LubricantState, lubricant_state
 from .scene import OperatingPoint, Scene, load_scene
+from .tribology import ContactFriction, FrictionData, evaluate_raceway_contact, load_friction
 from .units import parse_quantity
 
 try:
@@ -36,6 +37,8 @@ __all__ = [
     "__version__",
     "BearingData",
     "BearingGeometry",
+    "ContactFriction",
+    "FrictionData",
     "KegelInputError",
     "LubricantData",
     "LubricantState",
@@ -48,7 +51,9 @@ __all__ = [
     "available_materials",
     "derive_geometry",
     "envelope_violations",
+    "evaluate_raceway_contact",
     "load_bearing",
+    "load_friction",
     "load_lubricant",
     "load_material",
     "load_scene",

@@ -2,7 +2,10 @@
 // (ValueError naming the argument) before calling the noexcept kernel of tribology.hpp.
 #include "bindings.hpp"
 #include "kegel/core/checks.hpp"
+#include "kegel/core/slice.hpp"
 #include "kegel/core/tribology.hpp"
+
+#include <nanobind/stl/tuple.h>
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -13,6 +16,96 @@ constexpr const char* kOwner = "tribology";
 void pos(const char* name, double v) { detail::require_positive(kOwner, name, v); }
 void nonneg(const char* name, double v) { detail::require_nonnegative(kOwner, name, v); }
 void finite(const char* name, double v) { detail::require_finite(kOwner, name, v); }
+
+using V = FrictionParameters::Values;
+
+void bind_slice(nb::module_& m) {
+  nb::class_<V>(m, "FrictionParameterValues", "Friction-law parameters (see kegel/data/friction).")
+      .def(nb::init<>())
+      .def_rw("tau_L0_Pa", &V::tau_L0_Pa)
+      .def_rw("gamma_L", &V::gamma_L)
+      .def_rw("mu_s", &V::mu_s)
+      .def_rw("mu_d", &V::mu_d)
+      .def_rw("v_s_m_s", &V::v_s_m_s)
+      .def_rw("v_d_m_s", &V::v_d_m_s)
+      .def_rw("c_r", &V::c_r)
+      .def_rw("e_r", &V::e_r)
+      .def_rw("a_v", &V::a_v)
+      .def_rw("d_max_Ns_m", &V::d_max_Ns_m)
+      .def_rw("delta_max_m", &V::delta_max_m)
+      .def_rw("gold_C1_Pa_K2", &V::gold_C1_Pa_K2)
+      .def_rw("gold_C2_Pa_K", &V::gold_C2_Pa_K);
+  nb::class_<FrictionParameters>(m, "FrictionParameters", "Checked friction-law parameters.")
+      .def(nb::init<const V&>(), "values"_a)
+      .def_prop_ro("values", &FrictionParameters::values)
+      .def_prop_ro("compression_heating", &FrictionParameters::compression_heating);
+  nb::class_<SurfacePair>(m, "SurfacePair", "Roughness and Zhou-Hoeprich constants of a contact.")
+      .def(nb::init<double, double, double, double>(), "sigma_m"_a, "zhou_hoeprich_B"_a,
+           "zhou_hoeprich_C"_a, "E_reduced_Pa"_a)
+      .def_prop_ro("sigma_m", &SurfacePair::sigma_m)
+      .def_prop_ro("E_reduced_Pa", &SurfacePair::E_reduced_Pa);
+  nb::class_<ContactLubricantState>(m, "ContactLubricantState", "Lubricant at a bulk temperature.")
+      .def_ro("temperature_K", &ContactLubricantState::temperature_K)
+      .def_ro("eta0_Pas", &ContactLubricantState::eta0_Pas)
+      .def_ro("alpha_p_1_Pa", &ContactLubricantState::alpha_p_1_Pa)
+      .def_ro("deta_dtheta_Pas_K", &ContactLubricantState::deta_dtheta_Pas_K);
+  m.def("make_contact_lubricant_state", &make_contact_lubricant_state, "lubricant"_a,
+        "temperature_K"_a);
+  nb::class_<SliceInput>(m, "SliceInput", "One slice's load, geometry and surface velocities.")
+      .def(nb::init<>())
+      .def_rw("load_N", &SliceInput::load_N)
+      .def_rw("width_m", &SliceInput::width_m)
+      .def_rw("reduced_radius_m", &SliceInput::reduced_radius_m)
+      .def_rw("u1_x_m_s", &SliceInput::u1_x_m_s)
+      .def_rw("u1_y_m_s", &SliceInput::u1_y_m_s)
+      .def_rw("u2_x_m_s", &SliceInput::u2_x_m_s)
+      .def_rw("u2_y_m_s", &SliceInput::u2_y_m_s)
+      .def_rw("penetration_m", &SliceInput::penetration_m)
+      .def_rw("normal_velocity_m_s", &SliceInput::normal_velocity_m_s);
+  using R = SliceResult;
+  nb::class_<R>(m, "SliceResult", "Forces and moments of one slice by mechanism (on the roller).")
+      .def_ro("in_contact", &R::in_contact)
+      .def_ro("half_width_m", &R::half_width_m)
+      .def_ro("max_pressure_Pa", &R::max_pressure_Pa)
+      .def_ro("mean_pressure_Pa", &R::mean_pressure_Pa)
+      .def_ro("area_m2", &R::area_m2)
+      .def_ro("film_isothermal_m", &R::film_isothermal_m)
+      .def_ro("thermal_factor", &R::thermal_factor)
+      .def_ro("film_m", &R::film_m)
+      .def_ro("Lambda", &R::Lambda)
+      .def_ro("phi", &R::phi)
+      .def_ro("contact_temperature_K", &R::contact_temperature_K)
+      .def_ro("eta_contact_Pas", &R::eta_contact_Pas)
+      .def_ro("tau_L_Pa", &R::tau_L_Pa)
+      .def_ro("tau_ehl_Pa", &R::tau_ehl_Pa)
+      .def_ro("mu_solid", &R::mu_solid)
+      .def_ro("sliding_speed_m_s", &R::sliding_speed_m_s)
+      .def_ro("entrainment_speed_m_s", &R::entrainment_speed_m_s)
+      .def_prop_ro("F_ehl_sliding_N", [](const R& r) { return std::make_tuple(r.F_ehl_sliding_N[0], r.F_ehl_sliding_N[1]); })
+      .def_prop_ro("F_solid_sliding_N", [](const R& r) { return std::make_tuple(r.F_solid_sliding_N[0], r.F_solid_sliding_N[1]); })
+      .def_ro("F_ehl_rolling_N", &R::F_ehl_rolling_N)
+      .def_ro("M_solid_rolling_Nm", &R::M_solid_rolling_Nm)
+      .def_ro("M_hysteresis_Nm", &R::M_hysteresis_Nm)
+      .def_ro("F_damping_N", &R::F_damping_N)
+      .def_ro("P_ehl_sliding_W", &R::P_ehl_sliding_W)
+      .def_ro("P_solid_sliding_W", &R::P_solid_sliding_W);
+  m.def(
+      "evaluate_slice",
+      [](const SliceInput& in, const SurfacePair& sp, const ContactLubricantState& lub,
+         const FrictionParameters& fp) {
+        nonneg("load_N", in.load_N); nonneg("width_m", in.width_m);
+        pos("reduced_radius_m", in.reduced_radius_m);
+        finite("u1_x_m_s", in.u1_x_m_s); finite("u1_y_m_s", in.u1_y_m_s);
+        finite("u2_x_m_s", in.u2_x_m_s); finite("u2_y_m_s", in.u2_y_m_s);
+        finite("penetration_m", in.penetration_m); finite("normal_velocity_m_s", in.normal_velocity_m_s);
+        SliceResult out;
+        evaluate_slice(in, sp, lub, fp, out);
+        return out;
+      },
+      "slice"_a, "surfaces"_a, "lubricant_state"_a, "parameters"_a,
+      "Evaluate one slice: film state and every friction force and moment by mechanism.");
+}
+
 }  // namespace
 
 void bind_tribology(nb::module_& parent) {
@@ -86,6 +179,8 @@ void bind_tribology(nb::module_& parent) {
         return tribology::damping_coefficient(delta, dmax, dm);
       },
       "delta_m"_a, "d_max_Ns_m"_a, "delta_max_m"_a, "Eq. 2-3: parametric damping coefficient.");
+
+  bind_slice(m);
 }
 
 }  // namespace kegel::python

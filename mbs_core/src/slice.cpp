@@ -25,6 +25,11 @@ FrictionParameters::FrictionParameters(const Values& v) : v_(v) {
   require_nonnegative(o, "a_v", v.a_v);
   require_nonnegative(o, "d_max_Ns_m", v.d_max_Ns_m);
   require_positive(o, "delta_max_m", v.delta_max_m);
+  require_nonnegative(o, "gold_C1_Pa_K2", v.gold_C1_Pa_K2);
+  require_nonnegative(o, "gold_C2_Pa_K", v.gold_C2_Pa_K);
+  if ((v.gold_C1_Pa_K2 > 0.0) != (v.gold_C2_Pa_K > 0.0)) {
+    fail(o, "gold_C2_Pa_K", v.gold_C2_Pa_K, "C1 and C2 both > 0 (Eq. 9 on) or both 0 (off)");
+  }
   law_ = tribology::CubicFrictionLaw{v.mu_s, v.mu_d, v.v_s_m_s, v.v_d_m_s};
 }
 
@@ -49,6 +54,13 @@ ContactLubricantState make_contact_lubricant_state(const Lubricant& lub, double 
   s.thermal_conductivity_W_mK = q.thermal_conductivity_W_mK;
   s.dicke_a_bar = q.dicke_a1_bar + q.dicke_a2_bar_per_K * theta;
   s.dicke_b = q.dicke_b1 + q.dicke_b2_per_K * theta;
+  s.vogel_K_Pas = q.vogel_K_Pas;
+  s.vogel_B_K = q.vogel_B_K;
+  s.vogel_C_degC = q.vogel_C_degC;
+  s.dicke_a1_bar = q.dicke_a1_bar;
+  s.dicke_a2_bar_per_K = q.dicke_a2_bar_per_K;
+  s.dicke_b1 = q.dicke_b1;
+  s.dicke_b2_per_K = q.dicke_b2_per_K;
   if (!(s.dicke_a_bar > 0.0)) {
     detail::fail("Lubricant", "temperature_K", T, "a temperature with a1 + a2*theta > 0 (Eq. 7)");
   }
@@ -98,9 +110,21 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
   const double phi = tribology::asperity_load_ratio(out.Lambda, sp.B(), sp.C());  // Eq. 29
   out.phi = phi;
 
-  // Lubricant sliding: Dicke viscosity and limiting shear at the mean pressure (Eq. 4-7, 10)
+  // Lubricant sliding: Dicke viscosity and limiting shear at the mean pressure (Eq. 4-7, 10),
+  // at the bulk temperature or, with Eq. 9 on, at the compression temperature.
   const double p_bar = out.mean_pressure_Pa / kPaPerBar;
-  out.eta_contact_Pas = lub.eta0_Pas * std::exp(p_bar / (lub.dicke_a_bar + lub.dicke_b * p_bar));
+  double eta0_c = lub.eta0_Pas, a_c = lub.dicke_a_bar, b_c = lub.dicke_b;
+  out.contact_temperature_K = lub.temperature_K;
+  if (fp.compression_heating()) {
+    const double Tc = tribology::gold_compression_temperature_K(lub.temperature_K, out.mean_pressure_Pa,
+                                                                v.gold_C1_Pa_K2, v.gold_C2_Pa_K);
+    const double th = Tc - 273.15;
+    out.contact_temperature_K = Tc;
+    eta0_c = lub.vogel_K_Pas * std::exp(lub.vogel_B_K / (th + lub.vogel_C_degC));
+    a_c = lub.dicke_a1_bar + lub.dicke_a2_bar_per_K * th;
+    b_c = lub.dicke_b1 + lub.dicke_b2_per_K * th;
+  }
+  out.eta_contact_Pas = eta0_c * std::exp(p_bar / (a_c + b_c * p_bar));
   out.tau_L_Pa = tribology::limiting_shear_stress_Pa(v.tau_L0_Pa, v.gamma_L, out.mean_pressure_Pa);
   if (out.film_m > 0.0) {
     out.tau_ehl_Pa = tribology::bair_winer_shear_stress_Pa(out.eta_contact_Pas, us, out.film_m, out.tau_L_Pa);

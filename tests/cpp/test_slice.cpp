@@ -155,3 +155,19 @@ TEST(SliceParameters, ValidationNamesTheField) {
   const kegel::Lubricant lub{kegel::test::fva3()};
   EXPECT_THROW(kegel::make_contact_lubricant_state(lub, 100.0), std::invalid_argument);
 }
+
+TEST_F(Fixture, CompressionHeatingLowersContactViscosity) {
+  const auto cold = eval(slice(80.0, 5.05, 5.0));
+  EXPECT_DOUBLE_EQ(cold.contact_temperature_K, 323.15);  // Eq. 9 off by default
+  auto v = params();
+  v.gold_C1_Pa_K2 = 2.0e3;
+  v.gold_C2_Pa_K = 7.0e6;
+  const kegel::FrictionParameters hot_fp(v);
+  kegel::SliceResult hot;
+  kegel::evaluate_slice(slice(80.0, 5.05, 5.0), sp, state, hot_fp, hot);
+  const double dT = hot.contact_temperature_K - 323.15;
+  EXPECT_NEAR(2.0e3 * dT * dT + 7.0e6 * dT, hot.mean_pressure_Pa, 1e-6 * hot.mean_pressure_Pa);
+  EXPECT_LT(hot.eta_contact_Pas, cold.eta_contact_Pas);
+  v.gold_C2_Pa_K = 0.0;  // only one of the two set: rejected
+  EXPECT_THROW(kegel::FrictionParameters{v}, std::invalid_argument);
+}

@@ -208,3 +208,10 @@ TEST(Damping, CubicRiseContinuousAtBothEnds) {
               -2 * dmax / (dm * dm * dm) * d * d * d + 3 * dmax / (dm * dm) * d * d, 1e-9);
   EXPECT_DOUBLE_EQ(tr::damping_force_N(0.2, 2 * dm, dmax, dm), -100.0);  // opposes the motion
 }
+
+TEST(Coulomb, CageFrictionIsNormalForceTimesMu) {
+  const tr::CubicFrictionLaw law{0.1, 0.1, 1e-3, 2e-3};
+  EXPECT_DOUBLE_EQ(tr::cage_friction_force_N(law, 20.0, 0.5), 2.0);
+  EXPECT_DOUBLE_EQ(tr::cage_friction_force_N(law, 20.0, -0.5), -2.0);
+  EXPECT_DOUBLE_EQ(tr::cage_friction_force_N(law, 20.0, 0.0), 0.0);
+}

@@ -33,7 +33,11 @@ class FrictionParameters {
     double a_v = 0.0;              ///< hysteresis loss factor (Eq. 20)
     double d_max_Ns_m = 0.0;       ///< maximum damping coefficient per slice (Eq. 2)
     double delta_max_m = 1e-6;     ///< penetration of full damping (Eq. 2)
+    double gold_C1_Pa_K2 = 0.0;    ///< Gold et al. (Eq. 9); 0 switches compression heating off
+    double gold_C2_Pa_K = 0.0;     ///< Gold et al. (Eq. 9); 0 switches compression heating off
   };
+  /// True when Eq. 9 (compression heating of the contact lubricant) is active.
+  bool compression_heating() const noexcept { return v_.gold_C1_Pa_K2 > 0.0 && v_.gold_C2_Pa_K > 0.0; }
   explicit FrictionParameters(const Values& v);
   const Values& values() const noexcept { return v_; }
   const tribology::CubicFrictionLaw& cubic_law() const noexcept { return law_; }
@@ -66,6 +70,9 @@ struct ContactLubricantState {
   double thermal_conductivity_W_mK = 0.0;
   double dicke_a_bar = 0.0;              ///< a1 + a2 theta (Eq. 7)
   double dicke_b = 0.0;                  ///< b1 + b2 theta (Eq. 7)
+  // Parameters to re-evaluate Eq. 7-8 at the compression temperature of Eq. 9
+  double vogel_K_Pas = 0.0, vogel_B_K = 0.0, vogel_C_degC = 0.0;
+  double dicke_a1_bar = 0.0, dicke_a2_bar_per_K = 0.0, dicke_b1 = 0.0, dicke_b2_per_K = 0.0;
 };
 
 /// Evaluate the lubricant at a bulk temperature (throws std::invalid_argument outside the
@@ -99,6 +106,7 @@ struct SliceResult {
   double film_m = 0.0;                ///< h_th = phi_theta h_c (Eq. 11)
   double Lambda = 0.0;                ///< Eq. 30
   double phi = 1.0;                   ///< asperity load ratio, Eq. 29
+  double contact_temperature_K = 0.0; ///< bulk, or after compression heating (Eq. 9)
   double eta_contact_Pas = 0.0;       ///< Dicke viscosity at the mean pressure (Eq. 7)
   double tau_L_Pa = 0.0;              ///< limiting shear stress at the mean pressure
   double tau_ehl_Pa = 0.0;            ///< |tau| of the lubricant (Eq. 4-6, 10)

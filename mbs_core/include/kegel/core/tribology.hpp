@@ -144,6 +144,12 @@ inline double cubic_friction_coefficient(const CubicFrictionLaw& law, double v_m
   return v_m_s < 0.0 ? -mu : mu;
 }
 
+/// Eq. 37: Coulomb friction force of the roller/cage-pocket contact, F_T = F_N mu(v) with the
+/// regularised mu(v) of Eq. 21-27 (odd in the sliding velocity v).
+inline double cage_friction_force_N(const CubicFrictionLaw& law, double F_N, double v_m_s) noexcept {
+  return F_N * cubic_friction_coefficient(law, v_m_s);
+}
+
 /// Eq. 36 (Steinert): mixed friction F = phi F_solid + (1 - phi) F_fluid.
 inline double mixed_friction(double phi, double F_solid, double F_fluid) noexcept {
   return phi * F_solid + (1.0 - phi) * F_fluid;
