@@ -13,7 +13,7 @@ SUDO   := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Debian packages: compilers and build tools, the C++ dependencies, OpenFOAM v1912 with MPI,
 # and the X/GL libraries the gmsh wheel loads.
 APT_PACKAGES := build-essential cmake ninja-build git python3 python3-venv python3-dev \
-  libeigen3-dev libsundials-dev libgtest-dev googletest \
+  libeigen3-dev libsundials-dev libfftw3-dev pkg-config libgtest-dev googletest \
   openfoam openmpi-bin libopenmpi-dev \
   libglu1-mesa libxcursor1 libxinerama1 libxft2 libxrender1 libgl1
 
@@ -72,6 +72,7 @@ bench: setup
 	cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DKEGEL_BUILD_BENCHMARKS=ON -DKEGEL_BUILD_PYTHON=OFF
 	cmake --build build/bench -j 2
 	build/bench/benchmarks/cpp/bench_slice
+	build/bench/benchmarks/cpp/bench_cell
 	$(PY) benchmarks/run_all.py
 
 clean:
