@@ -73,6 +73,7 @@ bench: setup
 	cmake --build build/bench -j 2
 	build/bench/benchmarks/cpp/bench_slice
 	build/bench/benchmarks/cpp/bench_cell
+	build/bench/benchmarks/cpp/bench_line
 	$(PY) benchmarks/run_all.py
 
 clean:

@@ -1,0 +1,336 @@
+#include "kegel/core/line_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "kegel/core/checks.hpp"
+
+namespace kegel {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+#include "strip_table.inc"
+
+// Palmgren (N, mm): delta = 3.84e-5 Q^0.9 / l^0.8  <=>  Q = delta^(10/9) l^(8/9) 3.84e-5^(-10/9).
+// In SI (delta, l in m): Q = delta^(10/9) l^(8/9) * 3.84e-5^(-10/9) * 1e3^(10/9 + 8/9).
+const double kPalmgrenSI = std::pow(3.84e-5, -10.0 / 9.0) * 1e6;
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+RollerProfile::RollerProfile(const Values& v) : v_(v) {
+  using namespace detail;
+  constexpr const char* o = "RollerProfile";
+  require_positive(o, "roller_diameter_m", v.roller_diameter_m);
+  require_positive(o, "length_m", v.length_m);
+  require_nonnegative(o, "a_p", v.a_p);
+  require_nonnegative(o, "d_p_m", v.d_p_m);
+  require_nonnegative(o, "k_p_m", v.k_p_m);
+  require_nonnegative(o, "edge_radius_m", v.edge_radius_m);
+  if (!(v.edge_radius_m < 0.5 * v.length_m)) fail(o, "edge_radius_m", v.edge_radius_m, "a value < length/2");
+  if (v.a_p > 0.0) {
+    require_positive(o, "c_p_m", v.c_p_m);
+    const double pole = 0.5 * (v.d_p_m + v.c_p_m);
+    x_lin_ = pole - v.k_p_m;
+    if (!(x_lin_ > 0.5 * v.d_p_m)) fail(o, "k_p_m", v.k_p_m, "a value < c_p/2");
+    if (v.k_p_m == 0.0 && pole <= 0.5 * v.length_m) {
+      fail(o, "k_p_m", v.k_p_m, "> 0 when the logarithm's pole (d_p + c_p)/2 lies on the roller");
+    }
+    drop_lin_ = log_drop(x_lin_);
+    const double u = (2.0 * x_lin_ - v.d_p_m) / v.c_p_m;
+    slope_lin_ = v.a_p * v.roller_diameter_m * 2.0 * u / (1.0 - u * u) * (2.0 / v.c_p_m);
+  }
+}
+
+double RollerProfile::log_drop(double ax) const noexcept {
+  if (v_.a_p == 0.0 || ax <= 0.5 * v_.d_p_m) return 0.0;
+  const double u = (2.0 * ax - v_.d_p_m) / v_.c_p_m;
+  return -v_.a_p * v_.roller_diameter_m * std::log1p(-u * u);
+}
+
+double RollerProfile::drop_m(double x) const noexcept {
+  const double ax = std::abs(x);
+  double d = 0.0;
+  if (v_.a_p > 0.0) d = ax <= x_lin_ ? log_drop(ax) : drop_lin_ + slope_lin_ * (ax - x_lin_);
+  const double xe = 0.5 * v_.length_m - v_.edge_radius_m;
+  if (ax > xe && v_.edge_radius_m > 0.0) {
+    const double s = std::min(ax - xe, v_.edge_radius_m);
+    d += v_.edge_radius_m - std::sqrt(v_.edge_radius_m * v_.edge_radius_m - s * s);
+  }
+  return d;
+}
+
+// ---------------------------------------------------------------------------------------------
+double strip_influence_H(double a) noexcept {
+  const double s = a < 0.0 ? -1.0 : 1.0;
+  const double x = std::abs(a);
+  if (x == 0.0) return 0.0;
+  if (x >= kStripTableMax) {
+    const double i2 = 1.0 / (x * x);
+    return s * (0.5 * kPi * (std::log(4.0 * x) + 0.5) + (kPi / 32.0) * i2 - (3.0 * kPi / 512.0) * i2 * i2);
+  }
+  const double h = kStripTableMax / (kStripTableSize - 1);
+  const int i = std::min(int(x / h), kStripTableSize - 2);
+  const double t = (x - i * h) / h;
+  const double t2 = t * t, t3 = t2 * t;
+  const double R = (2 * t3 - 3 * t2 + 1) * kStripR[i] + (t3 - 2 * t2 + t) * h * kStripdR[i] +
+                   (-2 * t3 + 3 * t2) * kStripR[i + 1] + (t3 - t2) * h * kStripdR[i + 1];
+  return s * (R + 2.0 * x * std::log(4.0 / x));
+}
+
+double strip_influence_dH(double a) noexcept {
+  const double x = std::abs(a);
+  if (x == 0.0) return INFINITY;
+  if (x >= kStripTableMax) {
+    const double i2 = 1.0 / (x * x);
+    return 0.5 * kPi / x - (kPi / 16.0) * i2 / x + (3.0 * kPi / 128.0) * i2 * i2 / x;
+  }
+  const double h = kStripTableMax / (kStripTableSize - 1);
+  const int i = std::min(int(x / h), kStripTableSize - 2);
+  const double t = (x - i * h) / h;
+  const double t2 = t * t;
+  const double dR = ((6 * t2 - 6 * t) * kStripR[i] + (-6 * t2 + 6 * t) * kStripR[i + 1]) / h +
+                    (3 * t2 - 4 * t + 1) * kStripdR[i] + (3 * t2 - 2 * t) * kStripdR[i + 1];
+  return dR + 2.0 * std::log(4.0 / x) - 2.0;
+}
+
+// ---------------------------------------------------------------------------------------------
+LineContactModel::LineContactModel(int n, double l, const std::vector<double>& R, double E,
+                                   SliceMethod method)
+    : n_(n), l_(l), w_(0.0), E_(E), R_(R), method_(method), k_slice_(0.0) {
+  if (n < 1 || n > 400) {
+    throw std::invalid_argument("LineContactModel.slices = " + std::to_string(n) + ": expected 1..400");
+  }
+  detail::require_positive("LineContactModel", "length_m", l);
+  detail::require_positive("LineContactModel", "E_reduced_Pa", E);
+  if (int(R.size()) != n) {
+    throw std::invalid_argument("LineContactModel.reduced_radius_m: " + std::to_string(R.size()) +
+                                " values: expected one per slice (" + std::to_string(n) + ")");
+  }
+  for (double r : R) detail::require_positive("LineContactModel", "reduced_radius_m", r);
+  w_ = l / n;
+  k_slice_ = kPalmgrenSI * std::pow(l, 8.0 / 9.0) / n;
+  far_log_.assign(n, 0.0);
+  far_p2_.assign(n, 0.0);
+  far_p4_.assign(n, 0.0);
+  for (int k = 1; k < n; ++k) {
+    const double x1 = (k - 0.5) * w_, x2 = (k + 0.5) * w_;
+    far_log_[k] = std::log(x2 / x1);
+    far_p2_[k] = 1.0 / (x2 * x2) - 1.0 / (x1 * x1);
+    far_p4_[k] = 1.0 / (x2 * x2 * x2 * x2) - 1.0 / (x1 * x1 * x1 * x1);
+  }
+}
+
+void LineContactModel::influence_column(double b, double* v, double* t) const noexcept {
+  // C(k) = 4 / (pi^2 E') [H((k + 1/2) w / b) - H((k - 1/2) w / b)], H odd; beyond |a| = 6 the
+  // asymptote of H makes the difference (pi/2) ln(x2/x1) + (pi/32) b^2 (1/x2^2 - 1/x1^2)
+  // - (3 pi/512) b^4 (1/x2^4 - 1/x1^4), whose logarithm does not depend on b.
+  // Newton term: b ~ sqrt(q), so q dC/dq = (b/2) dC/db = -(c/2) [G(a2) - G(a1)], G(a) = a H'(a).
+  const double c = 4.0 / (kPi * kPi * E_);
+  auto G = [](double a) { return a * strip_influence_dH(a); };
+  double a_lo = 0.5 * w_ / b;
+  double h_lo = strip_influence_H(a_lo), g_lo = G(a_lo);
+  v[0] = c * 2.0 * h_lo;
+  t[0] = -c * g_lo;
+  const double b2 = b * b, b4 = b2 * b2;
+  for (int k = 1; k < n_; ++k) {
+    if ((k - 0.5) * w_ >= 6.0 * b) {
+      v[k] = c * (0.5 * kPi * far_log_[k] + (kPi / 32.0) * b2 * far_p2_[k] - (3.0 * kPi / 512.0) * b4 * far_p4_[k]);
+      t[k] = -0.5 * c * (-(kPi / 16.0) * b2 * far_p2_[k] + (3.0 * kPi / 128.0) * b4 * far_p4_[k]);
+    } else {
+      const double a_hi = (k + 0.5) * w_ / b;
+      const double h_hi = strip_influence_H(a_hi), g_hi = G(a_hi);
+      v[k] = c * (h_hi - h_lo);
+      t[k] = -0.5 * c * (g_hi - g_lo);
+      h_lo = h_hi;
+      g_lo = g_hi;
+    }
+  }
+}
+
+LineContactData::LineContactData(const LineContactModel& m)
+    : line_load_N_m(m.slices(), 0.0),
+      half_width_m(m.slices(), 0.0),
+      max_pressure_Pa(m.slices(), 0.0),
+      C_(m.slices(), m.slices()),
+      J_(m.slices(), m.slices()),
+      rhs_(m.slices()),
+      sol_(m.slices()),
+      lu_(m.slices()),
+      q_old_(m.slices()),
+      col_(m.slices()),
+      tcol_(m.slices()),
+      e_(m.slices()),
+      active_(m.slices()) {}
+
+namespace {
+
+double hertz_half_width(double q, double R, double E) noexcept {
+  return std::sqrt(8.0 * std::max(q, 1.0) * R / (kPi * E));  // floor: 1 N/m for unloaded slices
+}
+
+}  // namespace
+
+int solve_line_contact(const LineContactModel& m, LineContactData& d, const double* e,
+                       const LineContactSettings& s) noexcept {
+  const int n = m.slices();
+  const double w = m.width_m(), E = m.E_reduced_Pa();
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(e[i])) return -1;
+  double* q = d.line_load_N_m.data();
+  int status = 0;
+  d.iterations = 0;
+
+  if (m.method() == SliceMethod::Independent) {
+    for (int i = 0; i < n; ++i) q[i] = e[i] > 0.0 ? m.slice_stiffness() * std::pow(e[i], 10.0 / 9.0) / w : 0.0;
+  } else {
+    // AST: C_ij = C(|i - j|; b_j) (LineContactModel::influence_column). b_j depends on q_j, so
+    // Newton steps on C(q) q = e: J = C + T with T_ij = q_j dC_ij/dq_j, J q = e + T q_old, each
+    // solved as a complementarity problem by an active set (inactive rows and columns replaced
+    // by the identity, so the factorised matrix keeps its size and nothing is allocated).
+    double emax = 0.0;
+    for (int i = 0; i < n; ++i) emax = std::max(emax, e[i]);
+    if (!(emax > 0.0)) {
+      std::fill(q, q + n, 0.0);
+      d.has_active_ = false;
+    } else {
+      int* act = d.active_.data();
+      if (!d.has_active_) {
+        for (int i = 0; i < n; ++i) {
+          act[i] = e[i] > 0.0;
+          // cold start from the independent-slice (Palmgren) loads
+          q[i] = e[i] > 0.0 ? m.slice_stiffness() * std::pow(e[i], 10.0 / 9.0) / w : 0.0;
+        }
+        d.has_active_ = true;
+      }
+      status = 1;
+      for (int outer = 0; outer < s.max_outer; ++outer) {
+        ++d.iterations;
+        for (int j = 0; j < n; ++j) {
+          m.influence_column(hertz_half_width(q[j], m.reduced_radius_m(j), E), d.col_.data(), d.tcol_.data());
+          for (int i = 0; i < n; ++i) {
+            const int k = i > j ? i - j : j - i;
+            d.C_(i, j) = d.col_[k];
+            d.J_(i, j) = d.col_[k] + d.tcol_[k];
+          }
+        }
+        std::copy(q, q + n, d.q_old_.begin());
+        // right-hand side e + T q_old
+        for (int i = 0; i < n; ++i) {
+          double r = e[i];
+          for (int j = 0; j < n; ++j) r += (d.J_(i, j) - d.C_(i, j)) * d.q_old_[j];
+          d.rhs_[i] = r;
+        }
+        bool ok = false, set_changed = false;
+        for (int pass = 0; pass < 3 * n + 3; ++pass) {
+          // reduced system in full size: identity rows/columns for the inactive slices
+          for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) d.C_(i, j) = (act[i] && act[j]) ? d.J_(i, j) : (i == j ? 1.0 : 0.0);
+            d.sol_[i] = act[i] ? d.rhs_[i] : 0.0;
+          }
+          d.lu_.compute(d.C_);
+          d.sol_ = d.lu_.solve(d.sol_);
+          bool negative = false;
+          for (int i = 0; i < n; ++i) {
+            q[i] = act[i] ? d.sol_[i] : 0.0;
+            if (q[i] < 0.0) {
+              act[i] = 0;
+              negative = true;
+              set_changed = true;
+            }
+          }
+          if (negative) continue;
+          bool entered = false;
+          for (int i = 0; i < n; ++i) {
+            if (act[i]) continue;
+            double u = 0.0;
+            for (int j = 0; j < n; ++j) u += d.J_(i, j) * q[j];
+            if (u < d.rhs_[i] - 1e-12 * emax) {
+              act[i] = 1;
+              entered = true;
+              set_changed = true;
+            }
+          }
+          if (!entered) {
+            ok = true;
+            break;
+          }
+        }
+        if (!ok) return 1;
+        for (int i = 0; i < n; ++i) {
+          if (!std::isfinite(q[i])) return -1;
+        }
+        double dq = 0.0, qmax = 0.0;
+        for (int i = 0; i < n; ++i) {
+          dq = std::max(dq, std::abs(q[i] - d.q_old_[i]));
+          qmax = std::max(qmax, q[i]);
+        }
+        // Newton converges quadratically once the active set is settled: a step below
+        // sqrt(tol) leaves an error of order tol, so the confirming step is skipped.
+        if (dq <= s.tolerance * qmax || (outer > 0 && !set_changed && dq <= std::sqrt(s.tolerance) * qmax)) {
+          status = 0;
+          break;
+        }
+      }
+    }
+  }
+  d.force_N = 0.0;
+  d.moment_Nm = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double b = q[i] > 0.0 ? std::sqrt(8.0 * q[i] * m.reduced_radius_m(i) / (kPi * E)) : 0.0;
+    d.half_width_m[i] = b;
+    d.max_pressure_Pa[i] = q[i] > 0.0 ? 2.0 * q[i] / (kPi * b) : 0.0;
+    d.force_N += q[i] * w;
+    d.moment_Nm += q[i] * w * m.position_m(i);
+  }
+  return status;
+}
+
+int solve_line_contact_load(const LineContactModel& m, LineContactData& d, const double* gap,
+                            double force, double& approach, const LineContactSettings& s) noexcept {
+  const int n = m.slices();
+  if (!(force > 0.0) || !std::isfinite(force)) return -1;
+  double gmin = gap[0];
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(gap[i])) return -1;
+    gmin = std::min(gmin, gap[i]);
+  }
+  auto F = [&](double delta) -> double {
+    for (int i = 0; i < n; ++i) d.e_[i] = delta - gap[i];
+    if (solve_line_contact(m, d, d.e_.data(), s) < 0) return NAN;
+    return d.force_N - force;
+  };
+  // bracket: the Palmgren approach of the whole line is a good scale
+  const double scale = 3.84e-5 * std::pow(force, 0.9) / std::pow(m.length_m() * 1e3, 0.8) * 1e-3;
+  double lo = gmin, flo = -force;
+  double hi = gmin + scale, fhi = F(hi);
+  for (int k = 0; k < 60 && fhi < 0.0; ++k) {
+    lo = hi, flo = fhi;
+    hi = gmin + (hi - gmin) * 2.0;
+    fhi = F(hi);
+  }
+  if (!(fhi >= 0.0)) return 1;
+  // Illinois (regula falsi with halving)
+  int side = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double x = (lo * fhi - hi * flo) / (fhi - flo);
+    const double fx = F(x);
+    if (!std::isfinite(fx)) return 1;
+    if (std::abs(fx) <= 1e-10 * force || std::abs(hi - lo) <= 1e-15) {
+      approach = x;
+      return 0;
+    }
+    if (fx > 0.0) {
+      hi = x, fhi = fx;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    } else {
+      lo = x, flo = fx;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    }
+  }
+  return 1;
+}
+
+}  // namespace kegel
