@@ -110,8 +110,11 @@ double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double 
       gmin = std::min(gmin, gap);
     }
   }
-  for (int k = 0; k < nx * ny; ++k) h0[k] -= gmin;
-  return gmin;
+  // the true minimum is at the foot of the sphere centre (off the grid's cell centres)
+  const double g_true = s - R;
+  (void)gmin;
+  for (int k = 0; k < nx * ny; ++k) h0[k] -= g_true;
+  return g_true;
 }
 
 CagePocketResult cage_pocket_contact(const RollerShape& roller, const CagePocket& pocket,

@@ -85,9 +85,9 @@ struct RibFace {
 /// generator, y circumferential. Gaps come from exact ray intersections along the normal, so
 /// the truncation of the contact by the cap edge and the rib top (a crescent) is represented;
 /// cells off the cap or the rib get a gap of one sphere radius.
-/// Returns the minimum gap (< 0: the undeformed bodies overlap, the rigid interference is
-/// -minimum); h0 (nx * ny, row-major) receives the gap minus that minimum for
-/// solve_cell_contact(); p_RC the closest rib point; n_R the normal (rib -> roller).
+/// Returns the minimum gap, exact at the foot of the sphere centre (< 0: the undeformed bodies
+/// overlap, the rigid interference is -minimum); h0 (nx * ny, row-major) receives the gap minus
+/// that minimum (>= 0) for solve_cell_contact(), whose approach is then the interference; p_RC the closest rib point; n_R the normal (rib -> roller).
 double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double dx, double dy,
                double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R) noexcept;
 
