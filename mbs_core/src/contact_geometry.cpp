@@ -67,6 +67,21 @@ void raceway_slice_geometry(const RollerShape& roller, const RollerProfile& prof
   }
 }
 
+SliceInput make_slice_input(const SliceGeometry& g, double q, double width,
+                            const Eigen::Vector3d& v1, const Eigen::Vector3d& v2) noexcept {
+  SliceInput in;
+  in.load_N = q * width;
+  in.width_m = width;
+  in.reduced_radius_m = g.reduced_radius_m;
+  in.u1_x_m_s = v1.dot(g.t_roll_R);
+  in.u1_y_m_s = v1.dot(g.t_line_R);
+  in.u2_x_m_s = v2.dot(g.t_roll_R);
+  in.u2_y_m_s = v2.dot(g.t_line_R);
+  in.penetration_m = g.interference_m;
+  in.normal_velocity_m_s = -(v1 - v2).dot(g.n_R);
+  return in;
+}
+
 double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double dx, double dy,
                double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R) noexcept {
   Eigen::Vector3d n_out;

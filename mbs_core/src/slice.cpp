@@ -71,6 +71,49 @@ ContactLubricantState make_contact_lubricant_state(const Lubricant& lub, double 
   return s;
 }
 
+namespace {
+// Mixed sliding friction of a slice or cell whose pressure, area, film and phi are set in out:
+// Dicke viscosity and limiting shear at the mean pressure (Eq. 4-7, 10) at the bulk temperature
+// or, with Eq. 9 on, at the compression temperature; solid friction (Eq. 21-28); Eq. 36.
+void sliding_friction(double urx, double ury, double us, double Q, const ContactLubricantState& lub,
+                      const FrictionParameters& fp, SliceResult& out) noexcept {
+  const auto& v = fp.values();
+  const double phi = out.phi;
+  const double p_bar = out.mean_pressure_Pa / kPaPerBar;
+  double eta0_c = lub.eta0_Pas, a_c = lub.dicke_a_bar, b_c = lub.dicke_b;
+  out.contact_temperature_K = lub.temperature_K;
+  if (fp.compression_heating()) {
+    const double Tc = tribology::gold_compression_temperature_K(lub.temperature_K, out.mean_pressure_Pa,
+                                                                v.gold_C1_Pa_K2, v.gold_C2_Pa_K);
+    const double th = Tc - 273.15;
+    out.contact_temperature_K = Tc;
+    eta0_c = lub.vogel_K_Pas * std::exp(lub.vogel_B_K / (th + lub.vogel_C_degC));
+    a_c = lub.dicke_a1_bar + lub.dicke_a2_bar_per_K * th;
+    b_c = lub.dicke_b1 + lub.dicke_b2_per_K * th;
+  }
+  out.eta_contact_Pas = eta0_c * std::exp(p_bar / (a_c + b_c * p_bar));
+  out.tau_L_Pa = tribology::limiting_shear_stress_Pa(v.tau_L0_Pa, v.gamma_L, out.mean_pressure_Pa);
+  if (out.film_m > 0.0) {
+    out.tau_ehl_Pa = tribology::bair_winer_shear_stress_Pa(out.eta_contact_Pas, us, out.film_m, out.tau_L_Pa);
+  }
+  // Solid sliding (Eq. 21-28)
+  out.mu_solid = tribology::cubic_friction_coefficient(fp.cubic_law(), us);
+
+  // Mixed friction (Eq. 36), directed against the sliding velocity of the roller
+  const double f_ehl = (1.0 - phi) * out.tau_ehl_Pa * out.area_m2;
+  const double f_solid = phi * out.mu_solid * Q;
+  if (us > 0.0) {
+    const double ex = urx / us, ey = ury / us;
+    out.F_ehl_sliding_N[0] = -f_ehl * ex;
+    out.F_ehl_sliding_N[1] = -f_ehl * ey;
+    out.F_solid_sliding_N[0] = -f_solid * ex;
+    out.F_solid_sliding_N[1] = -f_solid * ey;
+    out.P_ehl_sliding_W = f_ehl * us;
+    out.P_solid_sliding_W = f_solid * us;
+  }
+}
+}  // namespace
+
 void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLubricantState& lub,
                     const FrictionParameters& fp, SliceResult& out) noexcept {
   out = SliceResult{};
@@ -110,40 +153,7 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
   const double phi = tribology::asperity_load_ratio(out.Lambda, sp.B(), sp.C());  // Eq. 29
   out.phi = phi;
 
-  // Lubricant sliding: Dicke viscosity and limiting shear at the mean pressure (Eq. 4-7, 10),
-  // at the bulk temperature or, with Eq. 9 on, at the compression temperature.
-  const double p_bar = out.mean_pressure_Pa / kPaPerBar;
-  double eta0_c = lub.eta0_Pas, a_c = lub.dicke_a_bar, b_c = lub.dicke_b;
-  out.contact_temperature_K = lub.temperature_K;
-  if (fp.compression_heating()) {
-    const double Tc = tribology::gold_compression_temperature_K(lub.temperature_K, out.mean_pressure_Pa,
-                                                                v.gold_C1_Pa_K2, v.gold_C2_Pa_K);
-    const double th = Tc - 273.15;
-    out.contact_temperature_K = Tc;
-    eta0_c = lub.vogel_K_Pas * std::exp(lub.vogel_B_K / (th + lub.vogel_C_degC));
-    a_c = lub.dicke_a1_bar + lub.dicke_a2_bar_per_K * th;
-    b_c = lub.dicke_b1 + lub.dicke_b2_per_K * th;
-  }
-  out.eta_contact_Pas = eta0_c * std::exp(p_bar / (a_c + b_c * p_bar));
-  out.tau_L_Pa = tribology::limiting_shear_stress_Pa(v.tau_L0_Pa, v.gamma_L, out.mean_pressure_Pa);
-  if (out.film_m > 0.0) {
-    out.tau_ehl_Pa = tribology::bair_winer_shear_stress_Pa(out.eta_contact_Pas, us, out.film_m, out.tau_L_Pa);
-  }
-  // Solid sliding (Eq. 21-28)
-  out.mu_solid = tribology::cubic_friction_coefficient(fp.cubic_law(), us);
-
-  // Mixed friction (Eq. 36), directed against the sliding velocity of the roller
-  const double f_ehl = (1.0 - phi) * out.tau_ehl_Pa * out.area_m2;
-  const double f_solid = phi * out.mu_solid * Q;
-  if (us > 0.0) {
-    const double ex = urx / us, ey = ury / us;
-    out.F_ehl_sliding_N[0] = -f_ehl * ex;
-    out.F_ehl_sliding_N[1] = -f_ehl * ey;
-    out.F_solid_sliding_N[0] = -f_solid * ex;
-    out.F_solid_sliding_N[1] = -f_solid * ey;
-    out.P_ehl_sliding_W = f_ehl * us;
-    out.P_solid_sliding_W = f_solid * us;
-  }
+  sliding_friction(urx, ury, us, Q, lub, fp, out);
 
   // Rolling resistance: EHL (Eq. 16-18), solid (Eq. 19), hysteresis (Eq. 20)
   if (uav > 0.0) {
@@ -156,6 +166,37 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
   // Damping (Eq. 1-3): approach velocity positive when the bodies move together
   out.F_damping_N = -tribology::damping_force_N(in.normal_velocity_m_s, in.penetration_m,
                                                 v.d_max_Ns_m, v.delta_max_m);
+}
+
+}  // namespace kegel
+
+namespace kegel {
+
+void evaluate_cell(const CellInput& in, const SurfacePair& sp, const ContactLubricantState& lub,
+                   const FrictionParameters& fp, SliceResult& out) noexcept {
+  out = SliceResult{};
+  if (!(in.load_N > 0.0) || !(in.area_m2 > 0.0)) return;
+  out.in_contact = true;
+  const double E = sp.E_reduced_Pa();
+  const double Q = in.load_N;
+  out.area_m2 = in.area_m2;
+  out.mean_pressure_Pa = Q / in.area_m2;
+  out.max_pressure_Pa = out.mean_pressure_Pa;  // a cell carries one pressure
+  const double urx = in.u1_x_m_s - in.u2_x_m_s, ury = in.u1_y_m_s - in.u2_y_m_s;
+  const double us = std::hypot(urx, ury);
+  const double uav = 0.5 * std::hypot(in.u1_x_m_s + in.u2_x_m_s, in.u1_y_m_s + in.u2_y_m_s);
+  out.sliding_speed_m_s = us;
+  out.entrainment_speed_m_s = uav;
+  if (uav > 0.0) {  // Eq. 31-35 with the cell's load (the paper's h_{0,i,j})
+    out.film_isothermal_m = tribology::elliptic_film_thickness_m(lub.eta0_Pas, uav, in.Rx_m, in.Ry_m, Q,
+                                                                 lub.alpha_p_1_Pa, E);
+    out.thermal_factor = tribology::zhu_cheng_factor(out.max_pressure_Pa, E, us, 2.0 * uav, lub.deta_dtheta_Pas_K,
+                                                     uav, lub.thermal_conductivity_W_mK);
+    out.film_m = out.thermal_factor * out.film_isothermal_m;
+  }
+  out.Lambda = tribology::film_parameter(out.film_m, sp.sigma_m());
+  out.phi = tribology::asperity_load_ratio(out.Lambda, sp.B(), sp.C());
+  sliding_friction(urx, ury, us, Q, lub, fp, out);
 }
 
 }  // namespace kegel

@@ -168,3 +168,19 @@ TEST(ContactGeometry, CagePocketForces) {
                                             Eigen::Vector3d(0.01, 0, 0), zero, 8);
   EXPECT_GT(d.normal_force_N, r.normal_force_N);
 }
+
+TEST(ContactGeometry, SliceInputProjectsVelocities) {
+  kegel::SliceGeometry g;
+  g.n_R = Eigen::Vector3d::UnitX();
+  g.t_roll_R = Eigen::Vector3d::UnitY();
+  g.t_line_R = Eigen::Vector3d::UnitZ();
+  g.reduced_radius_m = 7e-3;
+  g.interference_m = 2e-6;
+  const auto in = kegel::make_slice_input(g, 1e5, 1e-3, Eigen::Vector3d(-0.1, 5.0, 0.2), Eigen::Vector3d(0, 4.9, 0));
+  EXPECT_DOUBLE_EQ(in.load_N, 100.0);
+  EXPECT_DOUBLE_EQ(in.u1_x_m_s, 5.0);
+  EXPECT_DOUBLE_EQ(in.u1_y_m_s, 0.2);
+  EXPECT_DOUBLE_EQ(in.u2_x_m_s, 4.9);
+  EXPECT_DOUBLE_EQ(in.normal_velocity_m_s, 0.1);  // the roller moves towards the ring
+  EXPECT_DOUBLE_EQ(in.reduced_radius_m, 7e-3);
+}

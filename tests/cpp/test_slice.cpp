@@ -171,3 +171,29 @@ TEST_F(Fixture, CompressionHeatingLowersContactViscosity) {
   v.gold_C2_Pa_K = 0.0;  // only one of the two set: rejected
   EXPECT_THROW(kegel::FrictionParameters{v}, std::invalid_argument);
 }
+
+TEST_F(Fixture, RibCellEllipticFilmAndSlidingOnly) {
+  kegel::CellInput c;
+  c.load_N = 2.0;
+  c.area_m2 = 1e-8;  // 200 MPa in a 0.1 mm x 0.1 mm cell
+  c.Rx_m = 0.2;
+  c.Ry_m = 1.0;
+  c.u1_x_m_s = 3.0;   // roller end
+  c.u2_x_m_s = 2.5;   // rib
+  const kegel::SurfacePair rib(0.24e-6, 1.90, 0.99, 210e9 / 0.91);
+  kegel::SliceResult r;
+  kegel::evaluate_cell(c, rib, state, fp, r);
+  ASSERT_TRUE(r.in_contact);
+  const double uav = 2.75;
+  const double h = kegel::tribology::elliptic_film_thickness_m(state.eta0_Pas, uav, 0.2, 1.0, 2.0,
+                                                               state.alpha_p_1_Pa, 210e9 / 0.91);
+  EXPECT_DOUBLE_EQ(r.film_isothermal_m, h);
+  EXPECT_DOUBLE_EQ(r.film_m, r.thermal_factor * h);
+  EXPECT_DOUBLE_EQ(r.mean_pressure_Pa, 2e8);
+  EXPECT_DOUBLE_EQ(r.phi, std::exp(-1.90 * std::pow(r.Lambda, 0.99)));
+  EXPECT_LT(r.F_ehl_sliding_N[0], 0.0);  // the roller end is faster: friction brakes it
+  EXPECT_EQ(r.F_ehl_rolling_N, 0.0);
+  EXPECT_EQ(r.M_hysteresis_Nm, 0.0);
+  EXPECT_NEAR(r.P_ehl_sliding_W + r.P_solid_sliding_W,
+              -(r.F_ehl_sliding_N[0] + r.F_solid_sliding_N[0]) * 0.5, 1e-12);
+}

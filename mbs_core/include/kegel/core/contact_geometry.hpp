@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "kegel/core/line_contact.hpp"
+#include "kegel/core/slice.hpp"
 #include "kegel/core/tribology.hpp"
 
 namespace kegel {
@@ -64,6 +65,13 @@ void raceway_slice_geometry(const RollerShape& roller, const RollerProfile& prof
                             const Eigen::Vector3d& p_RM, const Eigen::Vector3d& a_R,
                             const Cone& raceway, RacewaySide side, const double* xi_m, int n,
                             SliceGeometry* out) noexcept;
+
+/// The tribology input of one slice (evaluate_slice) from its geometry, its line load q (from
+/// solve_line_contact) and the velocities of the roller's and the ring's material points at the
+/// contact point (frame R). Velocities are projected on the rolling direction (x) and the
+/// contact line (y); the approach velocity is the relative velocity along -n.
+SliceInput make_slice_input(const SliceGeometry& g, double line_load_N_m, double width_m,
+                            const Eigen::Vector3d& v_roller_R, const Eigen::Vector3d& v_ring_R) noexcept;
 
 /// The roller's large end: a spherical cap (centre p_RE on the roller axis a_R, radius R_e)
 /// limited to points within cap_radius of the roller axis.

@@ -127,6 +127,24 @@ struct SliceResult {
   double P_solid_sliding_W = 0.0;
 };
 
+/// One cell of the rib contact (cell model): its load, area and the principal relative radii of
+/// the contact (Rx along the entrainment direction) for the elliptic film of Eq. 31-35.
+struct CellInput {
+  double load_N = 0.0;        ///< p * cell area
+  double area_m2 = 0.0;       ///< cell area
+  double Rx_m = 0.0;          ///< reduced radius along the entrainment direction
+  double Ry_m = 0.0;          ///< reduced radius across it
+  double u1_x_m_s = 0.0, u1_y_m_s = 0.0;  ///< roller end surface velocity in the tangent plane
+  double u2_x_m_s = 0.0, u2_y_m_s = 0.0;  ///< rib surface velocity
+};
+
+/// Evaluate one cell of the roller end / rib contact: elliptic film (Eq. 31-35, per cell as the
+/// paper's h_{0,i,j}) with the Zhu-Cheng factor, Lambda with the rib roughness, and the mixed
+/// sliding friction (Eq. 4-10, 21-28, 36) at the cell's pressure. The rib contact is a sliding
+/// ("drilling") contact: no rolling resistance, hysteresis or damping terms are evaluated.
+void evaluate_cell(const CellInput& in, const SurfacePair& surfaces, const ContactLubricantState& lub,
+                   const FrictionParameters& fp, SliceResult& out) noexcept;
+
 /// Evaluate one slice (noexcept, allocation-free). A slice without load returns
 /// in_contact = false and zeros; a slice without entrainment has no film (Lambda = 0, phi = 1).
 void evaluate_slice(const SliceInput& in, const SurfacePair& surfaces,
