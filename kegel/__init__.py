@@ -10,6 +10,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError, version as _pkg_version
 
 from . import _core
+from . import contact
 from .data import (
     BearingData,
     LubricantData,
@@ -35,6 +36,7 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree wi
 
 __all__ = [
     "__version__",
+    "contact",
     "BearingData",
     "BearingGeometry",
     "ContactFriction",

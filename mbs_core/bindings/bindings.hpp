@@ -7,4 +7,5 @@ namespace kegel::python {
 void bind_lubricant(nanobind::module_& m);
 void bind_material(nanobind::module_& m);
 void bind_tribology(nanobind::module_& m);
+void bind_contact(nanobind::module_& m);
 }  // namespace kegel::python

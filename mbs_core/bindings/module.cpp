@@ -13,4 +13,5 @@ NB_MODULE(_core, m) {
   kegel::python::bind_lubricant(m);
   kegel::python::bind_material(m);
   kegel::python::bind_tribology(m);
+  kegel::python::bind_contact(m);
 }
