@@ -66,6 +66,7 @@ __all__ = [
     "Scene",
     "apply_overrides",
     "load_scene",
+    "resolve_oil_level",
     "scene_from_dict",
 ]
 
@@ -369,29 +370,38 @@ def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> 
     return Fidelity(name=preset + ("+custom" if custom else ""), **opts)
 
 
-def _lubrication(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Lubrication:
-    mode = reader.choice(table, "mode", "lubrication", ("oil_bath", "minimum_quantity"), None)
+def resolve_oil_level(written: Any, bearing: BearingData, *, source: str | Path, key: str) -> float:
+    """Oil level in metres above the lowest point of the bearing's outer diameter.
+
+    ``written`` is a length with its unit in [0, D] or one of ``none`` (0), ``half_roller`` (the
+    centre of the lowest roller: the paper's "oil bath half roller height"), ``shaft_center``
+    (D/2) and ``flooded`` (D).
+    """
     D = bearing.outer_diameter_m
-    written = table.get("oil_level", "none" if mode == "minimum_quantity" else None)
-    key = "lubrication.oil_level"
-    if written is None:
-        raise reader.error(key, None, f"an oil level ({', '.join(_OIL_LEVEL_WORDS)}, or a length in [0, D])")
     if written in _OIL_LEVEL_WORDS:
-        level = {
+        return {
             "none": 0.0,
-            # the oil surface at the centre of the lowest roller (the paper's "half roller height")
             "half_roller": 0.5 * (D - bearing.pitch_diameter_m),
             "shaft_center": 0.5 * D,
             "flooded": D,
         }[written]
-    else:
-        level = reader.quantity(written, "length", key)
-        if not 0.0 <= level <= D:
-            raise reader.error(
-                key, written,
-                f"an oil level in [0, D] = [0, {D * 1e3:g} mm] above the lowest point of the "
-                f"outer diameter of bearing {bearing.designation}",
-            )
+    level = parse_quantity(written, "length", source=source, key=key)
+    if not 0.0 <= level <= D:
+        raise KegelInputError(
+            source, key, written,
+            f"an oil level in [0, D] = [0, {D * 1e3:g} mm] above the lowest point of the "
+            f"outer diameter of bearing {bearing.designation}",
+        )
+    return level
+
+
+def _lubrication(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Lubrication:
+    mode = reader.choice(table, "mode", "lubrication", ("oil_bath", "minimum_quantity"), None)
+    written = table.get("oil_level", "none" if mode == "minimum_quantity" else None)
+    key = "lubrication.oil_level"
+    if written is None:
+        raise reader.error(key, None, f"an oil level ({', '.join(_OIL_LEVEL_WORDS)}, or a length in [0, D])")
+    level = resolve_oil_level(written, bearing, source=reader.src(key), key=key)
     if mode == "minimum_quantity" and level != 0.0:
         raise reader.error(key, written, "no oil level (or 'none') for minimum-quantity lubrication")
     if mode == "oil_bath" and level == 0.0:
