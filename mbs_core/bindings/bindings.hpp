@@ -8,4 +8,5 @@ void bind_lubricant(nanobind::module_& m);
 void bind_material(nanobind::module_& m);
 void bind_tribology(nanobind::module_& m);
 void bind_contact(nanobind::module_& m);
+void bind_quasi_static(nanobind::module_& m);
 }  // namespace kegel::python

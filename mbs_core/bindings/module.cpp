@@ -14,4 +14,5 @@ NB_MODULE(_core, m) {
   kegel::python::bind_material(m);
   kegel::python::bind_tribology(m);
   kegel::python::bind_contact(m);
+  kegel::python::bind_quasi_static(m);
 }

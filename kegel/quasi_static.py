@@ -1,0 +1,156 @@
+"""Quasi-static load distribution of a tapered roller bearing (C++ core, ``kegel._core.quasi_static``).
+
+:func:`load_distribution` builds the bearing model from the derived geometry and solves the
+inner ring's equilibrium under axial load, radial load and tilt moment: ring displacement, each
+roller's outer, inner and rib loads. Frame: z along the bearing axis towards the rollers' large
+ends, x along the radial load (the load zone is centred at azimuth 0); see
+``mbs_core/include/kegel/core/quasi_static.hpp``.
+
+Kinematics with slip and the friction torque build on this (issue "Quasi-static bearing
+solution", next steps).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core
+from .data import BearingData, MaterialData
+from .errors import KegelInputError
+from .geometry import BearingGeometry
+
+Q = _core.quasi_static
+
+__all__ = ["LoadDistribution", "bearing_model", "load_distribution"]
+
+
+def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, *, slices: int = 30,
+                  method: str = "alternative_slicing") -> "Q.BearingModel":
+    """The C++ bearing model of a bearing's derived geometry."""
+    if method not in ("alternative_slicing", "independent"):
+        raise KegelInputError("<argument>", "method", method, "'alternative_slicing' or 'independent'")
+    if not (isinstance(slices, int) and 2 <= slices <= 400):
+        raise KegelInputError("<argument>", "slices", slices, "an integer in [2, 400]")
+    v = Q.BearingModelValues()
+    v.roller_count = g.roller_count
+    v.pitch_radius_m = 0.5 * g.pitch_diameter_m
+    v.roller_mid_z_m = g.roller_mid_x_m
+    v.roller_axis_angle_rad = g.roller_axis_angle_rad
+    v.apex_z_m = g.apex_x_m
+    v.cup_angle_rad = g.cup_angle_rad
+    v.cone_angle_rad = g.cone_angle_rad
+    v.roller_mean_radius_m = 0.5 * g.roller_mean_diameter_m
+    v.roller_half_angle_rad = g.roller_half_angle_rad
+    v.roller_length_m = g.roller_length_m
+    v.roller_mass_kg = g.roller_mass_kg
+    v.E_reduced_Pa = _core.reduced_modulus_Pa(material.core, material.core)
+    phi = g.rib_face_angle_to_radial_plane_rad
+    x_p, r_p = g.rib_contact_point_m
+    v.rib_half_angle_rad = 0.5 * math.pi + phi
+    v.rib_apex_z_m = x_p + r_p * math.tan(phi)
+    v.rib_outer_radius_m = g.rib_top_point_m[1]
+    v.end_sphere_radius_m = g.roller_end_radius_m
+    v.end_cap_radius_m = 0.5 * g.roller_large_end_diameter_m - bearing.edge_radius_m
+    v.end_sphere_offset_m = 0.5 * g.roller_length_m - g.roller_end_radius_m
+    v.slices = slices
+    v.method = (_core.contact.SliceMethod.alternative_slicing if method == "alternative_slicing"
+                else _core.contact.SliceMethod.independent)
+    v.set_profile(bearing.roller_mean_diameter_m, bearing.roller_length_m, bearing.profile_a_p, bearing.profile_c_p_m,
+                  bearing.profile_d_p_m, bearing.profile_k_p_m, bearing.edge_radius_m)
+    return Q.BearingModel(v)
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Result of :func:`load_distribution` (SI units; azimuths in rad from the radial load)."""
+
+    ring_displacement_m: np.ndarray   # dx, dy, dz of the inner ring
+    ring_tilt_rad: np.ndarray         # rx, ry
+    reaction_moment_Nm: np.ndarray    # moment of the rollers on the ring about x, y (imposed tilt)
+    axial_force_N: float              # axial force carried by the rollers
+    azimuth_rad: np.ndarray
+    outer_N: np.ndarray
+    inner_N: np.ndarray
+    rib_N: np.ndarray
+    residual: float                   # ring equilibrium residual / load scale
+    roller_residual_max: float
+    iterations: int
+    runtime_s: float
+
+    @property
+    def loaded(self) -> np.ndarray:
+        """Rollers carrying load at the inner raceway."""
+        return self.inner_N > 1e-6 * max(self.inner_N.max(), 1e-300)
+
+
+def load_distribution(g: BearingGeometry, bearing: BearingData, material: MaterialData, *,
+                      axial_N: float | None = None, axial_offset_m: float | None = None, radial_N: float = 0.0, tilt_moment_Nm: float = 0.0, misalignment_rad: float = 0.0,
+                      tilt_free: bool = False, cage_speed_rad_s: float = 0.0,
+                      slices: int = 30, method: str = "alternative_slicing",
+                      model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None) -> LoadDistribution:
+    """Solve the quasi-static load distribution (see the module docstring).
+
+    The inner ring's tilt is imposed (``misalignment_rad`` about the axis normal to the radial
+    load; the moment is then an output) unless ``tilt_free``, when ``tilt_moment_Nm`` is
+    imposed instead. The axial load is force-controlled (``axial_N``) or displacement-controlled
+    (``axial_offset_m``: the inner ring pushed towards the apex by this much; the axial force is
+    then an output). ``model`` and ``data`` may be passed in to reuse them (``data`` then
+    warm-starts the solution, e.g. along a sweep).
+
+    Raises
+    ------
+    KegelInputError
+        Neither or both of ``axial_N`` and ``axial_offset_m``, or a force-controlled axial load
+        too small for the radial load: a single tapered roller bearing needs
+        Fa / Fr > tan(alpha_o), the ratio of one roller carrying everything.
+    """
+    if (axial_N is None) == (axial_offset_m is None):
+        raise KegelInputError("<argument>", "axial_N", axial_N, "exactly one of axial_N and axial_offset_m")
+    if axial_N is not None and radial_N > 0 and axial_N / radial_N <= math.tan(g.cup_angle_rad):
+        raise KegelInputError(
+            "<argument>", "axial_N", axial_N,
+            f"Fa / Fr > tan(alpha_o) = {math.tan(g.cup_angle_rad):.3f} for a single tapered roller bearing "
+            f"(here {axial_N / radial_N:.3f}: the inner ring would lift off); use a displacement-controlled "
+            f"axial offset for such load cases")
+    t0 = time.perf_counter()
+    model = model or bearing_model(g, bearing, material, slices=slices, method=method)
+    data = data or Q.BearingData(model)
+    loads = Q.BearingLoads()
+    if axial_offset_m is not None:
+        loads.axial_offset_controlled = True
+        loads.axial_offset_m = axial_offset_m
+    else:
+        loads.axial_N = axial_N
+    loads.radial_N = radial_N
+    loads.tilt_moment_Nm = tilt_moment_Nm
+    loads.misalignment_y_rad = misalignment_rad
+    loads.tilt_free = tilt_free
+    loads.cage_speed_rad_s = cage_speed_rad_s
+    try:
+        status = Q.solve_load_distribution(model, data, loads)
+    except ValueError as exc:
+        raise KegelInputError("<argument>", "loads", (axial_N, axial_offset_m, radial_N), str(exc)) from None
+    if status != 0:
+        raise RuntimeError(f"load distribution did not converge: ring residual {data.residual:.3e} of the load "
+                           f"after {data.iterations} iterations")
+    ring = np.asarray(data.ring)
+    rollers = data.rollers
+    Z = len(rollers)
+    return LoadDistribution(
+        ring_displacement_m=ring[:3].copy(),
+        ring_tilt_rad=ring[3:].copy(),
+        reaction_moment_Nm=np.asarray(data.reaction_moment_Nm).copy(),
+        axial_force_N=data.axial_force_N,
+        azimuth_rad=2 * np.pi * np.arange(Z) / Z,
+        outer_N=np.array([r.outer_N for r in rollers]),
+        inner_N=np.array([r.inner_N for r in rollers]),
+        rib_N=np.array([r.rib_N for r in rollers]),
+        residual=data.residual,
+        roller_residual_max=max(r.residual for r in rollers),
+        iterations=data.iterations,
+        runtime_s=time.perf_counter() - t0,
+    )

@@ -1,0 +1,87 @@
+// Python entry points of the quasi-static solution (kegel._core.quasi_static).
+#include <nanobind/eigen/dense.h>
+#include <nanobind/stl/vector.h>
+
+#include <stdexcept>
+
+#include "bindings.hpp"
+#include "kegel/core/quasi_static.hpp"
+
+namespace nb = nanobind;
+using namespace nb::literals;
+
+namespace kegel::python {
+
+void bind_quasi_static(nb::module_& parent) {
+  nb::module_ m = parent.def_submodule("quasi_static", "Quasi-static load distribution (SI units).");
+  using V = BearingModelValues;
+  nb::class_<V>(m, "BearingModelValues")
+      .def(nb::init<>())
+      .def_rw("roller_count", &V::roller_count)
+      .def_rw("pitch_radius_m", &V::pitch_radius_m)
+      .def_rw("roller_mid_z_m", &V::roller_mid_z_m)
+      .def_rw("roller_axis_angle_rad", &V::roller_axis_angle_rad)
+      .def_rw("apex_z_m", &V::apex_z_m)
+      .def_rw("cup_angle_rad", &V::cup_angle_rad)
+      .def_rw("cone_angle_rad", &V::cone_angle_rad)
+      .def_rw("roller_mean_radius_m", &V::roller_mean_radius_m)
+      .def_rw("roller_half_angle_rad", &V::roller_half_angle_rad)
+      .def_rw("roller_length_m", &V::roller_length_m)
+      .def_rw("roller_mass_kg", &V::roller_mass_kg)
+      .def_rw("E_reduced_Pa", &V::E_reduced_Pa)
+      .def_rw("rib_apex_z_m", &V::rib_apex_z_m)
+      .def_rw("rib_half_angle_rad", &V::rib_half_angle_rad)
+      .def_rw("rib_outer_radius_m", &V::rib_outer_radius_m)
+      .def_rw("end_sphere_radius_m", &V::end_sphere_radius_m)
+      .def_rw("end_cap_radius_m", &V::end_cap_radius_m)
+      .def_rw("end_sphere_offset_m", &V::end_sphere_offset_m)
+      .def_rw("slices", &V::slices)
+      .def_rw("method", &V::method)
+      .def(
+          "set_profile",
+          [](V& v, double D, double L, double a_p, double c_p, double d_p, double k_p, double r_e) {
+            v.profile = {D, L, a_p, c_p, d_p, k_p, r_e};
+          },
+          "roller_diameter_m"_a, "length_m"_a, "a_p"_a, "c_p_m"_a, "d_p_m"_a, "k_p_m"_a, "edge_radius_m"_a);
+  nb::class_<BearingModel>(m, "BearingModel")
+      .def(nb::init<const V&>(), "values"_a)
+      .def_prop_ro("rib_Rx_m", &BearingModel::rib_Rx_m)
+      .def_prop_ro("rib_Ry_m", &BearingModel::rib_Ry_m);
+  nb::class_<BearingLoads>(m, "BearingLoads")
+      .def(nb::init<>())
+      .def_rw("axial_N", &BearingLoads::axial_N)
+      .def_rw("radial_N", &BearingLoads::radial_N)
+      .def_rw("tilt_moment_Nm", &BearingLoads::tilt_moment_Nm)
+      .def_rw("misalignment_x_rad", &BearingLoads::misalignment_x_rad)
+      .def_rw("misalignment_y_rad", &BearingLoads::misalignment_y_rad)
+      .def_rw("tilt_free", &BearingLoads::tilt_free)
+      .def_rw("axial_offset_controlled", &BearingLoads::axial_offset_controlled)
+      .def_rw("axial_offset_m", &BearingLoads::axial_offset_m)
+      .def_rw("cage_speed_rad_s", &BearingLoads::cage_speed_rad_s);
+  nb::class_<RollerState>(m, "RollerState")
+      .def_ro("u_m", &RollerState::u_m)
+      .def_ro("w_m", &RollerState::w_m)
+      .def_ro("tilt_rad", &RollerState::tilt_rad)
+      .def_ro("outer_N", &RollerState::outer_N)
+      .def_ro("inner_N", &RollerState::inner_N)
+      .def_ro("rib_N", &RollerState::rib_N)
+      .def_ro("residual", &RollerState::residual);
+  nb::class_<BearingData>(m, "BearingData")
+      .def(nb::init<const BearingModel&>(), "model"_a)
+      .def_prop_ro("ring", [](const BearingData& d) { return Eigen::VectorXd(d.ring); })
+      .def_ro("rollers", &BearingData::rollers)
+      .def_ro("residual", &BearingData::residual)
+      .def_prop_ro("reaction_moment_Nm", [](const BearingData& d) { return Eigen::Vector2d(d.reaction_moment_Nm); })
+      .def_ro("axial_force_N", &BearingData::axial_force_N)
+      .def_ro("iterations", &BearingData::iterations);
+  m.def(
+      "solve_load_distribution",
+      [](const BearingModel& model, BearingData& data, const BearingLoads& loads) {
+        const int status = solve_load_distribution(model, data, loads);
+        if (status < 0) throw std::invalid_argument("BearingLoads: expected finite loads >= 0, not all zero");
+        return status;
+      },
+      "model"_a, "data"_a, "loads"_a, "Solve the load distribution; 0 = converged.");
+}
+
+}  // namespace kegel::python

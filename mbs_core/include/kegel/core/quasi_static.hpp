@@ -1,0 +1,122 @@
+// Quasi-static load distribution of a tapered roller bearing (issue "Quasi-static bearing
+// solution", first part): the inner ring's equilibrium under axial load, radial load and tilt
+// moment against the fixed outer ring, through every roller's raceway slices and rib contact.
+//
+// Frame R (outer ring, inertial): z = bearing axis, pointing from the rollers' small ends to
+// their large ends (away from the common apex); x = direction of the radial load (the load zone
+// is centred at azimuth 0). Roller j sits at azimuth psi_j = 2 pi j / Z.
+//
+// Unknowns: the inner ring's displacement (dx, dy, dz) and tilt (rx, ry) - 5 DOF - and, per
+// roller, its in-plane displacement (radial u, axial w) and tilt t about its circumferential
+// axis - 3 DOF. Each roller's equilibrium is solved for the current ring pose (Newton, 3 x 3),
+// which condenses the problem to the ring's 5 equations (Newton with a finite-difference
+// Jacobian). Contact forces: the slice models (independent or AST) for both raceways and the
+// closed-form elliptic Hertz contact for the rib; friction is not part of the load
+// distribution. Centrifugal force m omega_c^2 r acts on each roller. A roller out of contact is
+// held at its place by a weak spring (1 N/m, 1e-3 N m/rad: a stand-in for the cage; its force
+// is below 1e-4 N at the displacements of loaded rollers, 1e-8 of their loads).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "kegel/core/contact_geometry.hpp"
+#include "kegel/core/line_contact.hpp"
+
+namespace kegel {
+
+/// The fixed description of a bearing for the quasi-static solution (SI, frame R).
+struct BearingModelValues {
+  int roller_count = 0;
+  double pitch_radius_m = 0.0;        ///< distance of the roller mid-point from the axis
+  double roller_mid_z_m = 0.0;        ///< axial position of the roller mid-point
+  double roller_axis_angle_rad = 0.0; ///< beta
+  double apex_z_m = 0.0;              ///< common apex of the raceway cones
+  double cup_angle_rad = 0.0;         ///< alpha_o
+  double cone_angle_rad = 0.0;        ///< alpha_i
+  double roller_mean_radius_m = 0.0;
+  double roller_half_angle_rad = 0.0; ///< gamma
+  double roller_length_m = 0.0;
+  double roller_mass_kg = 0.0;
+  RollerProfile::Values profile;
+  double E_reduced_Pa = 0.0;
+  // rib
+  double rib_apex_z_m = 0.0;
+  double rib_half_angle_rad = 0.0;    ///< psi of the rib cone (> pi/2)
+  double rib_outer_radius_m = 0.0;
+  double end_sphere_radius_m = 0.0;
+  double end_cap_radius_m = 0.0;
+  double end_sphere_offset_m = 0.0;   ///< from the roller middle to the sphere centre, along the axis
+  // fidelity
+  int slices = 30;
+  SliceMethod method = SliceMethod::AlternativeSlicing;
+};
+
+class BearingModel {
+ public:
+  explicit BearingModel(const BearingModelValues& v);  ///< throws std::invalid_argument
+  const BearingModelValues& values() const noexcept { return v_; }
+  const RollerProfile& profile() const noexcept { return profile_; }
+  const LineContactModel& inner_line() const noexcept { return inner_; }
+  const LineContactModel& outer_line() const noexcept { return outer_; }
+  double rib_Rx_m() const noexcept { return rib_Rx_; }
+  double rib_Ry_m() const noexcept { return rib_Ry_; }
+
+ private:
+  BearingModelValues v_;
+  RollerProfile profile_;
+  LineContactModel inner_, outer_;
+  double rib_Rx_ = 0.0, rib_Ry_ = 0.0;
+};
+
+/// External loads on the inner ring and the speed for the centrifugal force.
+///
+/// The inner ring's tilt is either prescribed (tilt_free = false, the default: a shaft held by
+/// its other bearings, as on the paper's test rig; the misalignment angles are imposed and the
+/// moment the rollers put on the ring is an output) or free (tilt_free = true: the tilt moment
+/// is imposed and the ring finds its tilt).
+struct BearingLoads {
+  double axial_N = 0.0;        ///< pushes the inner ring towards the apex (-z): seats the rollers
+  double radial_N = 0.0;       ///< along +x, at (0, 0, z_M)
+  double tilt_moment_Nm = 0.0; ///< about +y (tilt_free)
+  double misalignment_x_rad = 0.0;  ///< imposed tilt about x (not tilt_free)
+  double misalignment_y_rad = 0.0;  ///< imposed tilt about y (not tilt_free)
+  bool tilt_free = false;
+  /// Displacement-controlled preload: the inner ring is held at dz = -axial_offset_m (towards
+  /// the apex) instead of carrying axial_N; the axial force is then an output.
+  bool axial_offset_controlled = false;
+  double axial_offset_m = 0.0;
+  double cage_speed_rad_s = 0.0;
+};
+
+/// Per-roller result.
+struct RollerState {
+  double u_m = 0.0, w_m = 0.0, tilt_rad = 0.0;  ///< roller DOF (radial, axial, tilt)
+  double outer_N = 0.0, inner_N = 0.0, rib_N = 0.0;  ///< contact force magnitudes
+  double residual = 0.0;                        ///< |roller equilibrium residual| / load scale
+};
+
+/// State and workspace (warm start: the previous solution).
+class BearingData {
+ public:
+  explicit BearingData(const BearingModel& model);
+  Eigen::Matrix<double, 5, 1> ring = Eigen::Matrix<double, 5, 1>::Zero();  ///< dx, dy, dz, rx, ry
+  std::vector<RollerState> rollers;
+  std::vector<LineContactData> inner_lines, outer_lines;
+  double residual = 0.0;   ///< ring equilibrium residual relative to the load scale
+  Eigen::Vector2d reaction_moment_Nm = Eigen::Vector2d::Zero();  ///< rollers on the ring about (0,0,z_M), x and y
+  double axial_force_N = 0.0;  ///< axial force the rollers carry (= axial_N in force control)
+  int iterations = 0;
+  bool has_solution = false;
+
+ private:
+  friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
+  std::vector<SliceGeometry> geo_;
+  std::vector<double> e_;
+};
+
+/// Solve the load distribution. @return 0 on convergence (ring residual below 1e-10 of the load
+/// scale), 1 if not converged, -1 for invalid loads.
+int solve_load_distribution(const BearingModel& model, BearingData& data, const BearingLoads& loads) noexcept;
+
+}  // namespace kegel

@@ -1,0 +1,341 @@
+#include "kegel/core/quasi_static.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "kegel/core/checks.hpp"
+#include "kegel/core/hertz.hpp"
+
+namespace kegel {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSpring_N_m = 1.0;       // stand-in for the cage on rollers out of contact
+constexpr double kSpring_Nm_rad = 1e-3;
+
+std::vector<double> nominal_reduced_radii(const BearingModelValues& v, const RollerProfile& prof,
+                                          RacewaySide side) {
+  const int n = v.slices;
+  std::vector<double> xi(n), R(n);
+  for (int i = 0; i < n; ++i) xi[i] = (i + 0.5) * v.roller_length_m / n - 0.5 * v.roller_length_m;
+  const Eigen::Vector3d M(v.pitch_radius_m, 0.0, v.roller_mid_z_m);
+  const Eigen::Vector3d a(std::sin(v.roller_axis_angle_rad), 0.0, std::cos(v.roller_axis_angle_rad));
+  const Cone cone{v.apex_z_m, side == RacewaySide::Inner ? v.cone_angle_rad : v.cup_angle_rad};
+  std::vector<SliceGeometry> g(n);
+  raceway_slice_geometry({v.roller_mean_radius_m, v.roller_half_angle_rad, v.roller_length_m}, prof, M, a, cone,
+                         side, xi.data(), n, g.data());
+  for (int i = 0; i < n; ++i) R[i] = g[i].reduced_radius_m;
+  return R;
+}
+
+const BearingModelValues& validated(const BearingModelValues& v) {
+  using namespace detail;
+  constexpr const char* o = "BearingModel";
+  if (v.roller_count < 3 || v.roller_count > 200) fail(o, "roller_count", v.roller_count, "3..200");
+  require_positive(o, "pitch_radius_m", v.pitch_radius_m);
+  require_finite(o, "roller_mid_z_m", v.roller_mid_z_m);
+  require_positive(o, "roller_axis_angle_rad", v.roller_axis_angle_rad);
+  require_finite(o, "apex_z_m", v.apex_z_m);
+  require_positive(o, "cup_angle_rad", v.cup_angle_rad);
+  require_positive(o, "cone_angle_rad", v.cone_angle_rad);
+  require_positive(o, "roller_mean_radius_m", v.roller_mean_radius_m);
+  require_nonnegative(o, "roller_half_angle_rad", v.roller_half_angle_rad);
+  require_positive(o, "roller_length_m", v.roller_length_m);
+  require_nonnegative(o, "roller_mass_kg", v.roller_mass_kg);
+  require_positive(o, "E_reduced_Pa", v.E_reduced_Pa);
+  require_finite(o, "rib_apex_z_m", v.rib_apex_z_m);
+  require_range(o, "rib_half_angle_rad", v.rib_half_angle_rad, 0.5 * kPi, kPi);
+  require_positive(o, "rib_outer_radius_m", v.rib_outer_radius_m);
+  require_positive(o, "end_sphere_radius_m", v.end_sphere_radius_m);
+  require_positive(o, "end_cap_radius_m", v.end_cap_radius_m);
+  require_finite(o, "end_sphere_offset_m", v.end_sphere_offset_m);
+  return v;
+}
+
+struct Pose {
+  Eigen::Matrix3d R;
+  Eigen::Vector3d d;
+};
+
+Pose ring_pose(const Eigen::Matrix<double, 5, 1>& x) {
+  Pose p;
+  p.R = (Eigen::AngleAxisd(x[3], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(x[4], Eigen::Vector3d::UnitY()))
+            .toRotationMatrix();
+  p.d = x.head<3>();
+  return p;
+}
+
+struct RollerEval {
+  Eigen::Vector3d residual = Eigen::Vector3d::Zero();  // radial force, axial force, tilt moment
+  Eigen::Vector3d F_ring = Eigen::Vector3d::Zero();    // force of the roller on the inner ring
+  Eigen::Vector3d M_ring = Eigen::Vector3d::Zero();    // its moment about (0, 0, z_M)
+  double Qo = 0.0, Qi = 0.0, Qrib = 0.0;
+  bool ok = true;
+};
+
+RollerEval eval_roller(const BearingModel& m, BearingData& d, std::vector<SliceGeometry>& geo,
+                       std::vector<double>& e, int j, const Pose& ring, const Eigen::Vector3d& dof,
+                       double omega_c) {
+  const auto& v = m.values();
+  const double psi = 2.0 * kPi * j / v.roller_count;
+  const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0), et(-std::sin(psi), std::cos(psi), 0.0);
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d M = (v.pitch_radius_m + dof[0]) * er + (v.roller_mid_z_m + dof[1]) * ez;
+  const Eigen::Vector3d a0 = std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * ez;
+  const Eigen::Vector3d a = Eigen::AngleAxisd(dof[2], et) * a0;
+  const RollerShape shape{v.roller_mean_radius_m, v.roller_half_angle_rad, v.roller_length_m};
+  const int n = v.slices;
+  const double w = m.outer_line().width_m();
+  RollerEval r;
+  Eigen::Vector3d F = Eigen::Vector3d::Zero(), Mo = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d O(0.0, 0.0, v.roller_mid_z_m);
+  std::vector<double> xi_dummy;  // positions come from the line model
+  double* xi = e.data() + n;     // second half of e holds the slice positions
+  for (int i = 0; i < n; ++i) xi[i] = m.outer_line().position_m(i);
+
+  // outer raceway (fixed ring)
+  raceway_slice_geometry(shape, m.profile(), M, a, {v.apex_z_m, v.cup_angle_rad}, RacewaySide::Outer, xi, n,
+                         geo.data());
+  for (int i = 0; i < n; ++i) e[i] = geo[i].interference_m;
+  if (solve_line_contact(m.outer_line(), d.outer_lines[j], e.data()) < 0) r.ok = false;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d f = d.outer_lines[j].line_load_N_m[i] * w * geo[i].n_R;
+    F += f;
+    Mo += (geo[i].p_RC - M).cross(f);
+  }
+  r.Qo = d.outer_lines[j].force_N;
+  // inner raceway, in the inner ring's frame
+  const Eigen::Vector3d Mi = ring.R.transpose() * (M - ring.d), ai = ring.R.transpose() * a;
+  raceway_slice_geometry(shape, m.profile(), Mi, ai, {v.apex_z_m, v.cone_angle_rad}, RacewaySide::Inner, xi, n,
+                         geo.data());
+  for (int i = 0; i < n; ++i) e[i] = geo[i].interference_m;
+  if (solve_line_contact(m.inner_line(), d.inner_lines[j], e.data()) < 0) r.ok = false;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d f = ring.R * (d.inner_lines[j].line_load_N_m[i] * w * geo[i].n_R);
+    const Eigen::Vector3d p = ring.R * geo[i].p_RC + ring.d;
+    F += f;
+    Mo += (p - M).cross(f);
+    r.F_ring -= f;
+    r.M_ring -= (p - O).cross(f);
+  }
+  r.Qi = d.inner_lines[j].force_N;
+  // rib (closed-form elliptic Hertz contact at the closest point)
+  RollerEnd end{Mi + v.end_sphere_offset_m * ai, ai, v.end_sphere_radius_m, v.end_cap_radius_m};
+  RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
+  double h0 = 0.0;
+  Eigen::Vector3d pc, nc;
+  const double gmin = rib_gap(end, rib, 1, 1, 1e-6, 1e-6, &h0, pc, nc);
+  if (gmin < 0.0) {
+    r.Qrib = hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -gmin).load_N;
+    const Eigen::Vector3d f = ring.R * (r.Qrib * nc);
+    const Eigen::Vector3d p = ring.R * pc + ring.d;
+    F += f;
+    Mo += (p - M).cross(f);
+    r.F_ring -= f;
+    r.M_ring -= (p - O).cross(f);
+  }
+  // centrifugal force and the stand-in cage spring
+  F += v.roller_mass_kg * omega_c * omega_c * (v.pitch_radius_m + dof[0]) * er;
+  F -= kSpring_N_m * (dof[0] * er + dof[1] * ez);
+  Mo -= kSpring_Nm_rad * dof[2] * et;
+  r.residual = Eigen::Vector3d(F.dot(er), F.dot(ez), Mo.dot(et));
+  return r;
+}
+
+// Newton on one roller's 3 DOF for a fixed ring pose.
+RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<SliceGeometry>& geo, std::vector<double>& e,
+                        int j, const Pose& ring, double omega_c, double scale) {
+  const double L = m.values().roller_length_m;
+  Eigen::Vector3d x(d.rollers[j].u_m, d.rollers[j].w_m, d.rollers[j].tilt_rad);
+  const Eigen::Vector3d h(1e-9, 1e-9, 1e-9 / L);
+  const Eigen::Vector3d limit(5e-6, 5e-6, 5e-6 / L);
+  RollerEval r = eval_roller(m, d, geo, e, j, ring, x, omega_c);
+  for (int it = 0; it < 60; ++it) {
+    const double res = std::max({std::abs(r.residual[0]), std::abs(r.residual[1]), std::abs(r.residual[2]) / L});
+    if (res <= 1e-11 * scale) break;
+    Eigen::Matrix3d J;
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector3d xp = x;
+      xp[k] += h[k];
+      J.col(k) = (eval_roller(m, d, geo, e, j, ring, xp, omega_c).residual - r.residual) / h[k];
+    }
+    Eigen::Vector3d dx = J.fullPivLu().solve(-r.residual);
+    const double s = std::max({std::abs(dx[0]) / limit[0], std::abs(dx[1]) / limit[1], std::abs(dx[2]) / limit[2], 1.0});
+    dx /= s;
+    // backtracking on the residual norm (scaled moment)
+    auto norm = [&](const Eigen::Vector3d& q) { return std::hypot(std::hypot(q[0], q[1]), q[2] / L); };
+    const double n0 = norm(r.residual);
+    double step = 1.0;
+    RollerEval rn;
+    for (int b = 0; b < 12; ++b) {
+      rn = eval_roller(m, d, geo, e, j, ring, x + step * dx, omega_c);
+      if (norm(rn.residual) < n0 || b == 11) break;
+      step *= 0.5;
+    }
+    x += step * dx;
+    r = rn;
+  }
+  d.rollers[j].u_m = x[0];
+  d.rollers[j].w_m = x[1];
+  d.rollers[j].tilt_rad = x[2];
+  d.rollers[j].outer_N = r.Qo;
+  d.rollers[j].inner_N = r.Qi;
+  d.rollers[j].rib_N = r.Qrib;
+  d.rollers[j].residual =
+      std::max({std::abs(r.residual[0]), std::abs(r.residual[1]), std::abs(r.residual[2]) / L}) / scale;
+  return r;
+}
+
+Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d, std::vector<SliceGeometry>& geo,
+                                          std::vector<double>& e, const Eigen::Matrix<double, 5, 1>& x,
+                                          const BearingLoads& L, double scale) {
+  const Pose ring = ring_pose(x);
+  Eigen::Vector3d F(L.radial_N, 0.0, L.axial_offset_controlled ? 0.0 : -L.axial_N), M(0.0, L.tilt_moment_Nm, 0.0);
+  for (int j = 0; j < m.values().roller_count; ++j) {
+    const RollerEval r = solve_roller(m, d, geo, e, j, ring, L.cage_speed_rad_s, scale);
+    F += r.F_ring;
+    M += r.M_ring;
+  }
+  const double Lr = m.values().pitch_radius_m;
+  Eigen::Matrix<double, 5, 1> res;
+  res << F[0], F[1], F[2], M[0] / Lr, M[1] / Lr;
+  return res;
+}
+
+double palmgren_m(double Q, double l) { return 3.84e-5 * std::pow(std::max(Q, 0.0), 0.9) / std::pow(l * 1e3, 0.8) * 1e-3; }
+
+}  // namespace
+
+BearingModel::BearingModel(const BearingModelValues& v)
+    : v_(validated(v)),
+      profile_(v.profile),
+      inner_(v.slices, v.roller_length_m, nominal_reduced_radii(v, RollerProfile(v.profile), RacewaySide::Inner),
+             v.E_reduced_Pa, v.method),
+      outer_(v.slices, v.roller_length_m, nominal_reduced_radii(v, RollerProfile(v.profile), RacewaySide::Outer),
+             v.E_reduced_Pa, v.method) {
+  // principal relative radii of the rib contact from the gap on a stencil at the nominal pose
+  const Eigen::Vector3d M(v.pitch_radius_m, 0.0, v.roller_mid_z_m);
+  const Eigen::Vector3d a(std::sin(v.roller_axis_angle_rad), 0.0, std::cos(v.roller_axis_angle_rad));
+  RollerEnd end{M + v.end_sphere_offset_m * a, a, v.end_sphere_radius_m, v.end_cap_radius_m};
+  RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
+  const double h = 1e-4;
+  double st[9];
+  Eigen::Vector3d p, n;
+  rib_gap(end, rib, 3, 3, h, h, st, p, n);
+  rib_Rx_ = h * h / (st[1] + st[7] - 2 * st[4]);
+  rib_Ry_ = h * h / (st[3] + st[5] - 2 * st[4]);
+  if (!(rib_Rx_ > 0.0) || !(rib_Ry_ > 0.0)) {
+    throw std::invalid_argument("BearingModel: the roller end and the rib do not form a convex contact");
+  }
+}
+
+BearingData::BearingData(const BearingModel& m)
+    : rollers(m.values().roller_count),
+      geo_(m.values().slices),
+      e_(2 * m.values().slices) {
+  for (int j = 0; j < m.values().roller_count; ++j) {
+    inner_lines.emplace_back(m.inner_line());
+    outer_lines.emplace_back(m.outer_line());
+  }
+}
+
+int solve_load_distribution(const BearingModel& m, BearingData& d, const BearingLoads& L) noexcept {
+  if (!std::isfinite(L.axial_N) || !std::isfinite(L.radial_N) || !std::isfinite(L.tilt_moment_Nm) ||
+      !std::isfinite(L.cage_speed_rad_s) || !std::isfinite(L.misalignment_x_rad) ||
+      !std::isfinite(L.misalignment_y_rad) || L.axial_N < 0.0 || L.radial_N < 0.0 ||
+      (L.axial_N == 0.0 && L.radial_N == 0.0 && !L.axial_offset_controlled))
+    return -1;
+  const auto& v = m.values();
+  if (L.axial_offset_controlled && !(std::isfinite(L.axial_offset_m) && L.axial_offset_m > 0.0)) return -1;
+  // unknowns: dx, dy, dz, rx, ry; the axial offset and an imposed tilt remove their DOF
+  int idx[5], ndof = 0;
+  for (int k = 0; k < 5; ++k) {
+    if (k == 2 && L.axial_offset_controlled) continue;
+    if (k >= 3 && !L.tilt_free) continue;
+    idx[ndof++] = k;
+  }
+  const double l = v.roller_length_m;
+  const double Fa_est = L.axial_offset_controlled
+                            ? v.roller_count * std::sin(v.cup_angle_rad) *
+                                  std::pow(0.5 * L.axial_offset_m * std::sin(v.cup_angle_rad) * 1e3 *
+                                               std::pow(l * 1e3, 0.8) / 3.84e-5, 1.0 / 0.9)
+                            : L.axial_N;
+  const double scale = Fa_est + L.radial_N + std::abs(L.tilt_moment_Nm) / v.pitch_radius_m;
+  Eigen::Matrix<double, 5, 1> x = d.ring;
+  if (!d.has_solution) {
+    // start: Palmgren approaches for the mean roller loads of the axial and the radial share
+    const double Qa = Fa_est / (v.roller_count * std::sin(v.cup_angle_rad));
+    const double Qr = 4.08 * L.radial_N / (v.roller_count * std::cos(v.cup_angle_rad));
+    const double da = 2.0 * palmgren_m(Qa + 0.5 * Qr, l);
+    x.setZero();
+    x[2] = -da / std::sin(v.cup_angle_rad);
+    x[0] = L.radial_N > 0.0 ? 2.0 * palmgren_m(Qr, l) / std::cos(v.cup_angle_rad) : 0.0;
+  }
+  if (L.axial_offset_controlled) x[2] = -L.axial_offset_m;
+  if (!L.tilt_free) {
+    x[3] = L.misalignment_x_rad;
+    x[4] = L.misalignment_y_rad;
+  }
+  auto residual = [&](const Eigen::Matrix<double, 5, 1>& xx, Eigen::Matrix<double, 5, 1>& out) {
+    out = ring_residual(m, d, d.geo_, d.e_, xx, L, scale);
+  };
+  Eigen::Matrix<double, 5, 1> full;
+  residual(x, full);
+  auto active = [&](const Eigen::Matrix<double, 5, 1>& f) {
+    Eigen::VectorXd a(ndof);
+    for (int k = 0; k < ndof; ++k) a[k] = f[idx[k]];
+    return a;
+  };
+  int status = 1;
+  d.iterations = 0;
+  const Eigen::Matrix<double, 5, 1> h = (Eigen::Matrix<double, 5, 1>() << 1e-9, 1e-9, 1e-9, 1e-8, 1e-8).finished();
+  for (int it = 0; it < 100; ++it) {
+    ++d.iterations;
+    if (active(full).cwiseAbs().maxCoeff() <= 1e-10 * scale) {
+      status = 0;
+      break;
+    }
+    const std::vector<RollerState> base = d.rollers;
+    Eigen::MatrixXd J(ndof, ndof);
+    Eigen::Matrix<double, 5, 1> fp;
+    for (int c = 0; c < ndof; ++c) {
+      d.rollers = base;
+      Eigen::Matrix<double, 5, 1> xp = x;
+      xp[idx[c]] += h[idx[c]];
+      residual(xp, fp);
+      J.col(c) = (active(fp) - active(full)) / h[idx[c]];
+    }
+    d.rollers = base;
+    Eigen::VectorXd dx = J.fullPivLu().solve(-active(full));
+    if (!dx.allFinite()) return 1;
+    const double lim = 10e-6;
+    double s = 1.0;
+    for (int c = 0; c < ndof; ++c) s = std::max(s, std::abs(dx[c]) * (idx[c] >= 3 ? v.pitch_radius_m : 1.0) / lim);
+    dx /= s;
+    double step = 1.0;
+    const double n0 = active(full).norm();
+    Eigen::Matrix<double, 5, 1> fn;
+    for (int b = 0; b < 20; ++b) {
+      d.rollers = base;
+      Eigen::Matrix<double, 5, 1> xt = x;
+      for (int c = 0; c < ndof; ++c) xt[idx[c]] += step * dx[c];
+      residual(xt, fn);
+      if (active(fn).norm() < n0 || b == 19) break;
+      step *= 0.5;
+    }
+    for (int c = 0; c < ndof; ++c) x[idx[c]] += step * dx[c];
+    full = fn;
+  }
+  d.ring = x;
+  d.residual = active(full).cwiseAbs().maxCoeff() / scale;
+  // the moment of the rollers on the ring (about x and y), scaled back from the residual form
+  const double Lr = v.pitch_radius_m;
+  d.reaction_moment_Nm = Eigen::Vector2d(full[3] * Lr, full[4] * Lr - L.tilt_moment_Nm);
+  // residual z = -Fa_applied + (axial force of the rollers on the ring): the carried axial force
+  d.axial_force_N = full[2] + (L.axial_offset_controlled ? 0.0 : L.axial_N);
+  d.has_solution = true;
+  return status;
+}
+
+}  // namespace kegel

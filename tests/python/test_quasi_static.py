@@ -1,0 +1,86 @@
+"""Quasi-static load distribution: equilibrium, symmetry, load zone, displacement control."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import kegel
+from kegel.quasi_static import bearing_model, load_distribution
+from kegel.tribology import axial_roller_loads
+
+
+@pytest.fixture(scope="module")
+def b32216():
+    b = kegel.load_bearing("32216")
+    m = kegel.load_material("bearing_steel")
+    return kegel.derive_geometry(b, m), b, m
+
+
+@pytest.mark.parametrize("method", ["independent", "alternative_slicing"])
+def test_pure_axial_load_equal_rollers_summing_to_the_load(b32216, method):
+    g, b, m = b32216
+    r = load_distribution(g, b, m, axial_N=6000.0, method=method)
+    assert r.residual < 1e-8 and r.roller_residual_max < 1e-8
+    for q in (r.outer_N, r.inner_N, r.rib_N):
+        assert q.max() - q.min() < 1e-9 * q.max()
+    # the cup carries the axial load through the rollers only
+    assert (r.outer_N * math.sin(g.cup_angle_rad)).sum() == pytest.approx(6000.0, rel=1e-6)
+    # each roller's in-plane balance (kegel.tribology.axial_roller_loads, derived by hand)
+    ref = axial_roller_loads(g, 6000.0)
+    assert r.outer_N[0] == pytest.approx(ref["outer_N"], rel=5e-3)
+    assert r.inner_N[0] == pytest.approx(ref["inner_N"], rel=5e-3)
+    assert r.rib_N[0] == pytest.approx(ref["rib_N"], rel=5e-3)
+    assert np.allclose(r.ring_displacement_m[:2], 0.0, atol=1e-12)
+    assert r.ring_displacement_m[2] < 0.0  # pushed towards the apex
+    assert r.axial_force_N == pytest.approx(6000.0, rel=1e-8)
+
+
+def test_load_zone_shrinks_as_the_radial_share_grows(b32216):
+    g, b, m = b32216
+    model = bearing_model(g, b, m, method="independent")
+    counts, peaks = [], []
+    for fr in (1000.0, 6500.0, 15000.0, 20000.0):
+        r = load_distribution(g, b, m, axial_N=6500.0, radial_N=fr, model=model)
+        assert r.residual < 1e-8
+        counts.append(int(r.loaded.sum()))
+        peaks.append(r.inner_N.max())
+        assert r.inner_N.argmax() == 0  # the load zone is centred on the radial load
+        # symmetric about the load direction
+        assert np.allclose(r.inner_N[1:], r.inner_N[1:][::-1], rtol=1e-6, atol=1e-6 * r.inner_N.max())
+    assert counts == sorted(counts, reverse=True) and counts[-1] < counts[0]
+    assert peaks == sorted(peaks)
+
+
+def test_displacement_controlled_preload_reproduces_the_force(b32216):
+    g, b, m = b32216
+    force = load_distribution(g, b, m, axial_N=6500.0, method="independent")
+    offset = -force.ring_displacement_m[2]
+    disp = load_distribution(g, b, m, axial_offset_m=offset, method="independent")
+    assert disp.axial_force_N == pytest.approx(6500.0, rel=1e-7)
+    assert np.allclose(disp.inner_N, force.inner_N, rtol=1e-6)
+    # a radial load at fixed offset raises the axial force (the induced axial load)
+    combined = load_distribution(g, b, m, axial_offset_m=offset, radial_N=16000.0, method="independent")
+    assert combined.residual < 1e-8 and combined.axial_force_N > 6500.0
+
+
+def test_free_tilt_and_imposed_tilt_agree(b32216):
+    g, b, m = b32216
+    free = load_distribution(g, b, m, axial_N=6500.0, radial_N=6500.0, tilt_free=True, method="independent")
+    assert free.residual < 1e-8
+    imposed = load_distribution(g, b, m, axial_N=6500.0, radial_N=6500.0, misalignment_rad=free.ring_tilt_rad[1],
+                                method="independent")
+    assert abs(imposed.reaction_moment_Nm[1]) < 1e-6 * 6500.0 * g.pitch_diameter_m
+    assert np.allclose(imposed.inner_N, free.inner_N, rtol=1e-5)
+
+
+def test_infeasible_and_invalid_loads(b32216):
+    g, b, m = b32216
+    with pytest.raises(kegel.KegelInputError, match=r"Fa / Fr > tan\(alpha_o\) = 0.280"):
+        load_distribution(g, b, m, axial_N=500.0, radial_N=16000.0)
+    with pytest.raises(kegel.KegelInputError, match="exactly one of axial_N and axial_offset_m"):
+        load_distribution(g, b, m, axial_N=500.0, axial_offset_m=1e-5)
+    with pytest.raises(kegel.KegelInputError, match="expected finite loads"):
+        load_distribution(g, b, m, axial_N=-5.0)
