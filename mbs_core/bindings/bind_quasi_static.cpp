@@ -1,6 +1,7 @@
 // Python entry points of the quasi-static solution (kegel._core.quasi_static).
 #include <nanobind/eigen/dense.h>
 #include <nanobind/stl/vector.h>
+#include <nanobind/stl/string.h>
 
 #include <stdexcept>
 
@@ -82,6 +83,44 @@ void bind_quasi_static(nb::module_& parent) {
         return status;
       },
       "model"_a, "data"_a, "loads"_a, "Solve the load distribution; 0 = converged.");
+  m.def(
+      "evaluate_bearing_friction",
+      [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
+         const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
+         const SurfacePair& rib) {
+        BearingFriction f;
+        const int status = evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f);
+        if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
+                                                    "with a finite non-zero inner-ring speed");
+        nb::dict d;
+        d["status"] = status;
+        d["inner_speed_rad_s"] = f.inner_speed_rad_s;
+        d["cage_speed_rad_s"] = f.cage_speed_rad_s;
+        d["cage_speed_pure_rolling_rad_s"] = f.cage_speed_pure_rolling_rad_s;
+        d["roller_spin_rad_s"] = f.roller_spin_rad_s;
+        d["roller_spin_pure_rolling_rad_s"] = f.roller_spin_pure_rolling_rad_s;
+        d["drive_torque_Nm"] = f.drive_torque_Nm;
+        d["outer_ring_torque_Nm"] = f.outer_ring_torque_Nm;
+        d["power_input_W"] = f.power_input_W;
+        d["power_dissipated_W"] = f.power_dissipated_W;
+        d["cage_residual_Nm"] = f.cage_residual_Nm;
+        const char* contacts[3] = {"outer_raceway", "inner_raceway", "rib"};
+        const char* mechs[5] = {"ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis"};
+        nb::dict p, lam, phi;
+        for (int k = 0; k < 3; ++k) {
+          nb::dict row;
+          for (int q = 0; q < 5; ++q) row[mechs[q]] = f.power_W[k][q];
+          p[contacts[k]] = row;
+          lam[contacts[k]] = f.Lambda_min[k];
+          phi[contacts[k]] = f.phi_max[k];
+        }
+        d["power_W"] = p;
+        d["Lambda_min"] = lam;
+        d["phi_max"] = phi;
+        return d;
+      },
+      "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
+      "rib"_a, "Friction of the whole bearing at the solved load distribution.");
 }
 
 }  // namespace kegel::python

@@ -22,6 +22,7 @@
 
 #include "kegel/core/contact_geometry.hpp"
 #include "kegel/core/line_contact.hpp"
+#include "kegel/core/slice.hpp"
 
 namespace kegel {
 
@@ -114,6 +115,41 @@ class BearingData {
   std::vector<SliceGeometry> geo_;
   std::vector<double> e_;
 };
+
+/// Friction of the whole bearing at a solved load distribution (quasi-static, steady state).
+///
+/// Kinematics: every roller spins at the rate that balances the friction moments about its own
+/// axis, and the cage turns at the speed at which the loads the pockets take from the rollers
+/// (their friction forces and skew moments) have no net moment about the bearing axis - so
+/// light loads show slip.
+/// Each slice is evaluated with evaluate_slice() (surface velocities relative to the cage, where
+/// the contact is); the rib as one elliptic contact with evaluate_cell(). Rolling resistance
+/// (hysteresis, solid rolling, and the EHL rolling force as the moment 2 F R' of equal
+/// dissipation) acts through a shift of each slice's normal force towards the inlet, so every
+/// contact load is an action-reaction pair and the power balance closes.
+struct BearingFriction {
+  enum Contact { kOuter = 0, kInner = 1, kRib = 2 };
+  enum Mechanism { kEhlSliding = 0, kSolidSliding = 1, kEhlRolling = 2, kSolidRolling = 3, kHysteresis = 4 };
+  double inner_speed_rad_s = 0.0;
+  double cage_speed_rad_s = 0.0;
+  double cage_speed_pure_rolling_rad_s = 0.0;
+  std::vector<double> roller_spin_rad_s, roller_spin_pure_rolling_rad_s;
+  double drive_torque_Nm = 0.0;       ///< torque the shaft puts on the inner ring
+  double outer_ring_torque_Nm = 0.0;  ///< reaction torque on the outer ring (the measured one)
+  double power_input_W = 0.0;         ///< drive torque x inner-ring speed
+  double power_dissipated_W = 0.0;    ///< sum of the mechanism powers
+  double power_W[3][5] = {};          ///< by contact and mechanism
+  double Lambda_min[3] = {0, 0, 0};
+  double phi_max[3] = {0, 0, 0};
+  double cage_residual_Nm = 0.0;      ///< net moment of the rollers on the cage about the axis
+};
+
+/// Evaluate the friction at the load distribution in data (solve_load_distribution first).
+/// @return 0 on success, 1 if the cage or a roller balance did not converge, -1 bad input.
+int evaluate_bearing_friction(const BearingModel& model, BearingData& data, const BearingLoads& loads,
+                              double inner_speed_rad_s, const ContactLubricantState& lubricant,
+                              const FrictionParameters& friction, const SurfacePair& raceway,
+                              const SurfacePair& rib, BearingFriction& out) noexcept;
 
 /// Solve the load distribution. @return 0 on convergence (ring residual below 1e-10 of the load
 /// scale), 1 if not converged, -1 for invalid loads.

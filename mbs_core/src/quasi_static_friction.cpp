@@ -1,0 +1,302 @@
+// Friction of the whole bearing at a solved load distribution (see quasi_static.hpp).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "kegel/core/contact_geometry.hpp"
+#include "kegel/core/hertz.hpp"
+#include "kegel/core/quasi_static.hpp"
+
+namespace kegel {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// One loaded contact point of a roller, in the inertial frame R.
+struct Point {
+  Eigen::Vector3d p, n, t_roll, t_line;  // contact point, normal (ring -> roller), tangents
+  double load_N = 0.0, width_m = 0.0, R_m = 0.0;
+  int contact = 0;                        // BearingFriction::Contact
+  double rib_Rx = 0.0, rib_Ry = 0.0, rib_area = 0.0;
+};
+
+struct Roller {
+  Eigen::Vector3d M, a, et;
+  std::vector<Point> points;
+};
+
+// Forces of all contact points of a roller for spin w_R and cage speed w_c: returns the spin
+// moment about the roller axis and the moment about the bearing axis (which the cage pocket
+// takes: the cage is in balance when these sum to zero); optionally accumulates the
+// torques on the rings and the mechanism powers.
+struct Eval {
+  double spin_moment = 0.0;
+  double axis_moment = 0.0;  // moment of the contact loads on the roller about the bearing axis
+  double torque_inner = 0.0, torque_outer = 0.0;  // moments about z of the forces on the rings
+  double P[3][5] = {};
+  double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
+};
+
+Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubricantState& lub,
+          const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& rib, bool accumulate) {
+  Eval e;
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+  for (const Point& c : r.points) {
+    // surface velocities relative to the cage (where the contact is) and sliding
+    const Eigen::Vector3d u1 = w_R * r.a.cross(c.p - r.M);
+    const double w_ring_rel = c.contact == BearingFriction::kOuter ? -w_c : w_i - w_c;
+    const Eigen::Vector3d u2 = w_ring_rel * ez.cross(c.p);
+    SliceResult s;
+    if (c.contact == BearingFriction::kRib) {
+      CellInput in;
+      in.load_N = c.load_N;
+      in.area_m2 = c.rib_area;
+      in.Rx_m = c.rib_Rx;
+      in.Ry_m = c.rib_Ry;
+      in.u1_x_m_s = u1.dot(c.t_roll);
+      in.u1_y_m_s = u1.dot(c.t_line);
+      in.u2_x_m_s = u2.dot(c.t_roll);
+      in.u2_y_m_s = u2.dot(c.t_line);
+      evaluate_cell(in, rib, lub, fp, s);
+    } else {
+      SliceInput in;
+      in.load_N = c.load_N;
+      in.width_m = c.width_m;
+      in.reduced_radius_m = c.R_m;
+      in.u1_x_m_s = u1.dot(c.t_roll);
+      in.u1_y_m_s = u1.dot(c.t_line);
+      in.u2_x_m_s = u2.dot(c.t_roll);
+      in.u2_y_m_s = u2.dot(c.t_line);
+      evaluate_slice(in, race, lub, fp, s);
+    }
+    // tangential force on the roller: sliding (Eq. 36)
+    const Eigen::Vector3d f = (s.F_ehl_sliding_N[0] + s.F_solid_sliding_N[0]) * c.t_roll +
+                              (s.F_ehl_sliding_N[1] + s.F_solid_sliding_N[1]) * c.t_line;
+    const double u1x = u1.dot(c.t_roll), u2x = u2.dot(c.t_roll);
+    // rolling resistance as a moment on the pair: hysteresis (Eq. 20), solid rolling (Eq. 19) and
+    // the EHL rolling force (Eq. 16) acting on both surfaces, whose dissipation F (u1 + u2) equals
+    // that of the moment 2 F R' at the rolling rate u / R'. The moment acts through a shift of the
+    // normal force towards the inlet by M / Q, an action-reaction pair on roller and ring.
+    const double M_ehl = 2.0 * s.F_ehl_rolling_N * c.R_m;
+    const double Mrr = s.M_hysteresis_Nm + s.M_solid_rolling_Nm + M_ehl;
+    const double shift = c.load_N > 0.0 ? Mrr / c.load_N : 0.0;
+    const double um = 0.5 * (u1x + u2x);
+    const Eigen::Vector3d p_n = c.p - shift * (um >= 0 ? 1.0 : -1.0) * c.t_roll;
+    const Eigen::Vector3d fn = c.load_N * c.n;
+    const Eigen::Vector3d m_roller = (c.p - r.M).cross(f) + (p_n - r.M).cross(fn);
+    e.spin_moment += m_roller.dot(r.a);
+    e.axis_moment += (c.p.cross(f) + p_n.cross(fn)).dot(ez);
+    if (accumulate) {
+      // forces on the ring: -(sliding), its own rolling resistance, -(normal) at the shifted point
+      const double tz = c.p.cross(-f).dot(ez) + p_n.cross(-fn).dot(ez);
+      if (c.contact == BearingFriction::kOuter) e.torque_outer += tz; else e.torque_inner += tz;
+      const int k = c.contact;
+      e.P[k][BearingFriction::kEhlSliding] += s.P_ehl_sliding_W;
+      e.P[k][BearingFriction::kSolidSliding] += s.P_solid_sliding_W;
+      if (c.R_m > 0.0) {
+        const double rate = 0.5 * (std::abs(u1x) + std::abs(u2x)) / c.R_m;  // rolling rate u / R'
+        e.P[k][BearingFriction::kEhlRolling] += M_ehl * rate;
+        e.P[k][BearingFriction::kSolidRolling] += s.M_solid_rolling_Nm * rate;
+        e.P[k][BearingFriction::kHysteresis] += s.M_hysteresis_Nm * rate;
+      }
+      if (s.in_contact) {
+        e.Lmin[k] = std::min(e.Lmin[k], s.Lambda);
+        e.phimax[k] = std::max(e.phimax[k], s.phi);
+      }
+    }
+  }
+  return e;
+}
+
+// Brent's method on [a, b] with f(a) f(b) <= 0.
+template <class F>
+bool brent(F f, double a, double b, double fa, double fb, double tol, double& root) {
+  if (fa * fb > 0.0) return false;
+  double c = a, fc = fa, d = b - a, e = d;
+  for (int it = 0; it < 200; ++it) {
+    if (fb * fc > 0.0) { c = a; fc = fa; d = e = b - a; }
+    if (std::abs(fc) < std::abs(fb)) { a = b; b = c; c = a; fa = fb; fb = fc; fc = fa; }
+    const double t = 2.0 * 1e-16 * std::abs(b) + 0.5 * tol, m = 0.5 * (c - b);
+    if (std::abs(m) <= t || fb == 0.0) { root = b; return true; }
+    if (std::abs(e) >= t && std::abs(fa) > std::abs(fb)) {
+      double p, q, r, s = fb / fa;
+      if (a == c) { p = 2.0 * m * s; q = 1.0 - s; }
+      else { q = fa / fc; r = fb / fc; p = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0)); q = (q - 1.0) * (r - 1.0) * (s - 1.0); }
+      if (p > 0.0) q = -q; else p = -p;
+      if (2.0 * p < std::min(3.0 * m * q - std::abs(t * q), std::abs(e * q))) { e = d; d = p / q; }
+      else { d = m; e = d; }
+    } else { d = m; e = d; }
+    a = b; fa = fb;
+    b += std::abs(d) > t ? d : (m > 0 ? t : -t);
+    fb = f(b);
+  }
+  root = b;
+  return false;
+}
+
+}  // namespace
+
+int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
+                              const ContactLubricantState& lub, const FrictionParameters& fp,
+                              const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out) noexcept {
+  if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0) return -1;
+  const auto& v = m.values();
+  const int Z = v.roller_count, n = v.slices;
+  const double w = m.outer_line().width_m();
+  Eigen::Matrix3d Rr =
+      (Eigen::AngleAxisd(d.ring[3], Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(d.ring[4], Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
+  const Eigen::Vector3d dr = d.ring.head<3>();
+  const RollerShape shape{v.roller_mean_radius_m, v.roller_half_angle_rad, v.roller_length_m};
+  std::vector<double> xi(n), e(n);
+  for (int i = 0; i < n; ++i) xi[i] = m.outer_line().position_m(i);
+  std::vector<SliceGeometry> geo(n);
+  std::vector<Roller> rollers(Z);
+  // contact points at the load distribution
+  for (int j = 0; j < Z; ++j) {
+    Roller& r = rollers[j];
+    const double psi = 2.0 * kPi * j / Z;
+    const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0);
+    r.et = Eigen::Vector3d(-std::sin(psi), std::cos(psi), 0.0);
+    const auto& st = d.rollers[j];
+    r.M = (v.pitch_radius_m + st.u_m) * er + (v.roller_mid_z_m + st.w_m) * Eigen::Vector3d::UnitZ();
+    r.a = Eigen::AngleAxisd(st.tilt_rad, r.et) *
+          (std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * Eigen::Vector3d::UnitZ());
+    for (int side = 0; side < 2; ++side) {
+      const bool outer = side == 0;
+      const Eigen::Vector3d M = outer ? r.M : Eigen::Vector3d(Rr.transpose() * (r.M - dr));
+      const Eigen::Vector3d a = outer ? r.a : Eigen::Vector3d(Rr.transpose() * r.a);
+      raceway_slice_geometry(shape, m.profile(), M, a, {v.apex_z_m, outer ? v.cup_angle_rad : v.cone_angle_rad},
+                             outer ? RacewaySide::Outer : RacewaySide::Inner, xi.data(), n, geo.data());
+      for (int i = 0; i < n; ++i) e[i] = geo[i].interference_m;
+      LineContactData& ld = outer ? d.outer_lines[j] : d.inner_lines[j];
+      if (solve_line_contact(outer ? m.outer_line() : m.inner_line(), ld, e.data()) < 0) return -1;
+      for (int i = 0; i < n; ++i) {
+        if (!(ld.line_load_N_m[i] > 0.0)) continue;
+        Point c;
+        const Eigen::Matrix3d R = outer ? Eigen::Matrix3d::Identity() : Rr;
+        c.p = R * geo[i].p_RC + (outer ? Eigen::Vector3d::Zero() : dr);
+        c.n = R * geo[i].n_R;
+        c.t_roll = R * geo[i].t_roll_R;
+        c.t_line = R * geo[i].t_line_R;
+        c.load_N = ld.line_load_N_m[i] * w;
+        c.width_m = w;
+        c.R_m = geo[i].reduced_radius_m;
+        c.contact = outer ? BearingFriction::kOuter : BearingFriction::kInner;
+        r.points.push_back(c);
+      }
+    }
+    // rib, as one elliptic contact
+    const Eigen::Vector3d Mi = Rr.transpose() * (r.M - dr), ai = Rr.transpose() * r.a;
+    RollerEnd end{Mi + v.end_sphere_offset_m * ai, ai, v.end_sphere_radius_m, v.end_cap_radius_m};
+    RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
+    double h0 = 0.0;
+    Eigen::Vector3d pc, nc;
+    const double gmin = rib_gap(end, rib, 1, 1, 1e-6, 1e-6, &h0, pc, nc);
+    if (gmin < 0.0) {
+      const HertzEllipse hz = hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -gmin);
+      Point c;
+      c.p = Rr * pc + dr;
+      c.n = Rr * nc;
+      const Eigen::Vector3d er_c = Eigen::Vector3d(c.p.x(), c.p.y(), 0.0).normalized();
+      c.t_roll = Eigen::Vector3d::UnitZ().cross(er_c);  // circumferential
+      c.t_line = c.n.cross(c.t_roll).normalized();      // along the rib generator
+      c.load_N = hz.load_N;
+      c.contact = BearingFriction::kRib;
+      c.rib_Rx = m.rib_Rx_m();
+      c.rib_Ry = m.rib_Ry_m();
+      c.rib_area = kPi * hz.semi_major_m * hz.semi_minor_m;
+      r.points.push_back(c);
+    }
+  }
+
+  // pure rolling: the rolling condition at the two raceway contacts of the middle slice of a
+  // roller at its nominal place (apex-matched geometry)
+  {
+    const Eigen::Vector3d er = Eigen::Vector3d::UnitX(), et = Eigen::Vector3d::UnitY(), ez = Eigen::Vector3d::UnitZ();
+    const Eigen::Vector3d M = v.pitch_radius_m * er + v.roller_mid_z_m * ez;
+    const Eigen::Vector3d a = std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * ez;
+    const Eigen::Vector3d n_perp = -std::sin(v.roller_axis_angle_rad) * ez + std::cos(v.roller_axis_angle_rad) * er;
+    const Eigen::Vector3d po = M + v.roller_mean_radius_m * n_perp, pi = M - v.roller_mean_radius_m * n_perp;
+    const double ko = a.cross(po - M).dot(et), ki = a.cross(pi - M).dot(et);
+    // outer: w_c r_o + w_R ko = 0; inner: w_c r_i + w_R ki = w_i r_i
+    const double ro = po.x(), ri = pi.x();
+    const double det = ro * ki - ri * ko;
+    out.cage_speed_pure_rolling_rad_s = w_i * ri * ki / det;
+    const double w_R0 = -out.cage_speed_pure_rolling_rad_s * ro / ko;
+    out.roller_spin_pure_rolling_rad_s.assign(Z, w_R0);
+  }
+  const double wc0 = out.cage_speed_pure_rolling_rad_s, wR0 = out.roller_spin_pure_rolling_rad_s[0];
+  out.roller_spin_rad_s.assign(Z, wR0);
+  int status = 0;
+  auto spin_for_cage = [&](double w_c, std::vector<double>& spins) {
+    double tangential = 0.0;
+    for (int j = 0; j < Z; ++j) {
+      const Roller& r = rollers[j];
+      const double w_pure = wR0 * w_c / wc0;
+      if (r.points.empty()) {
+        spins[j] = w_pure;
+        continue;
+      }
+      auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false).spin_moment; };
+      double lo = w_pure * 0.9, hi = w_pure * 1.1;
+      double flo = S(lo), fhi = S(hi);
+      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+        lo = w_pure + (lo - w_pure) * 2.0;
+        hi = w_pure + (hi - w_pure) * 2.0;
+        flo = S(lo);
+        fhi = S(hi);
+      }
+      double root = w_pure;
+      if (!brent(S, lo, hi, flo, fhi, 1e-13 * std::abs(w_pure), root)) status = 1;
+      spins[j] = root;
+      tangential += eval(r, root, w_c, w_i, lub, fp, race, ribp, false).axis_moment;
+    }
+    return tangential;
+  };
+  std::vector<double> spins(Z);
+  auto C = [&](double w_c) { return spin_for_cage(w_c, spins); };
+  double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
+  for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+    lo = wc0 + (lo - wc0) * 2.0;
+    hi = wc0 + (hi - wc0) * 2.0;
+    flo = C(lo);
+    fhi = C(hi);
+  }
+  double w_c = wc0;
+  if (!brent(C, lo, hi, flo, fhi, 1e-13 * std::abs(wc0), w_c)) status = 1;
+  out.cage_residual_Nm = spin_for_cage(w_c, spins);
+  out.cage_speed_rad_s = w_c;
+  out.roller_spin_rad_s = spins;
+  out.inner_speed_rad_s = w_i;
+
+  // torques and powers at the solution
+  double t_in = 0.0, t_out = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    for (int q = 0; q < 5; ++q) out.power_W[k][q] = 0.0;
+    out.Lambda_min[k] = 1e300;
+    out.phi_max[k] = 0.0;
+  }
+  for (int j = 0; j < Z; ++j) {
+    const Eval ev = eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, true);
+    t_in += ev.torque_inner;
+    t_out += ev.torque_outer;
+    for (int k = 0; k < 3; ++k) {
+      for (int q = 0; q < 5; ++q) out.power_W[k][q] += ev.P[k][q];
+      out.Lambda_min[k] = std::min(out.Lambda_min[k], ev.Lmin[k]);
+      out.phi_max[k] = std::max(out.phi_max[k], ev.phimax[k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+    if (out.Lambda_min[k] > 1e299) out.Lambda_min[k] = 0.0;
+  out.drive_torque_Nm = -t_in;
+  out.outer_ring_torque_Nm = t_out;
+  out.power_input_W = out.drive_torque_Nm * w_i;
+  double P = 0.0;
+  for (int k = 0; k < 3; ++k)
+    for (int q = 0; q < 5; ++q) P += out.power_W[k][q];
+  out.power_dissipated_W = P;
+  (void)L;
+  return status;
+}
+
+}  // namespace kegel
