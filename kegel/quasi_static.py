@@ -25,7 +25,7 @@ from .geometry import BearingGeometry
 
 Q = _core.quasi_static
 
-__all__ = ["LoadDistribution", "bearing_model", "load_distribution"]
+__all__ = ["BearingFrictionResult", "LoadDistribution", "bearing_friction", "bearing_model", "load_distribution"]
 
 
 def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, *, slices: int = 30,
@@ -154,3 +154,104 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
         iterations=data.iterations,
         runtime_s=time.perf_counter() - t0,
     )
+
+
+@dataclass(frozen=True)
+class BearingFrictionResult:
+    """Friction of the whole bearing at one operating point (SI units).
+
+    ``power_W[contact][mechanism]`` explains the torque: contacts ``outer_raceway``,
+    ``inner_raceway``, ``rib``; mechanisms ``ehl_sliding``, ``solid_sliding``, ``ehl_rolling``,
+    ``solid_rolling``, ``hysteresis``. The torque share of a mechanism is its power divided by the
+    inner-ring speed.
+    """
+
+    drive_torque_Nm: float
+    outer_ring_torque_Nm: float
+    power_input_W: float
+    power_dissipated_W: float
+    cage_speed_rad_s: float
+    cage_speed_pure_rolling_rad_s: float
+    roller_spin_rad_s: np.ndarray
+    roller_spin_pure_rolling_rad_s: np.ndarray
+    power_W: dict
+    Lambda_min: dict
+    phi_max: dict
+    converged: bool
+    runtime_s: float
+
+    @property
+    def cage_slip(self) -> float:
+        """1 - cage speed / pure-rolling cage speed (> 0: the cage lags)."""
+        return 1.0 - self.cage_speed_rad_s / self.cage_speed_pure_rolling_rad_s
+
+    @property
+    def power_balance_error(self) -> float:
+        """Dissipated over input power minus 1."""
+        return self.power_dissipated_W / self.power_input_W - 1.0
+
+    def torque_by_contact_Nm(self, inner_speed_rad_s: float) -> dict[str, float]:
+        """Share of the friction torque of each contact (its power / inner-ring speed)."""
+        return {k: sum(v.values()) / inner_speed_rad_s for k, v in self.power_W.items()}
+
+    def torque_by_mechanism_Nm(self, inner_speed_rad_s: float) -> dict[str, float]:
+        """Share of the friction torque of each mechanism, summed over the contacts."""
+        out: dict[str, float] = {}
+        for row in self.power_W.values():
+            for k, v in row.items():
+                out[k] = out.get(k, 0.0) + v / inner_speed_rad_s
+        return out
+
+
+def bearing_friction(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction,
+                     *, temperature_K: float, inner_speed_rad_s: float, axial_N: float | None = None,
+                     axial_offset_m: float | None = None, radial_N: float = 0.0, misalignment_rad: float = 0.0,
+                     slices: int = 30, method: str = "alternative_slicing",
+                     model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None
+                     ) -> tuple[LoadDistribution, BearingFrictionResult]:
+    """Load distribution and friction of the whole bearing at one operating point.
+
+    Parameters
+    ----------
+    lubricant, friction
+        :class:`kegel.LubricantData` and :class:`kegel.FrictionData`.
+    temperature_K, inner_speed_rad_s
+        Oil temperature and inner-ring speed (outer ring fixed).
+    Other parameters as in :func:`load_distribution`; the centrifugal force uses the
+    pure-rolling cage speed.
+    """
+    model = model or bearing_model(g, bearing, material, slices=slices, method=method)
+    data = data or Q.BearingData(model)
+    cage0 = inner_speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+    dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
+                             misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0, model=model, data=data)
+    t0 = time.perf_counter()
+    T = _core.tribology
+    E = _core.reduced_modulus_Pa(material.core, material.core)
+    race = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B, bearing.zhou_hoeprich_raceway_C, E)
+    rib = T.SurfacePair(bearing.sigma_rib_m, bearing.zhou_hoeprich_rib_B, bearing.zhou_hoeprich_rib_C, E)
+    loads = Q.BearingLoads()
+    if axial_offset_m is not None:
+        loads.axial_offset_controlled = True
+        loads.axial_offset_m = axial_offset_m
+    else:
+        loads.axial_N = axial_N
+    loads.radial_N = radial_N
+    state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
+    f = Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant), race, rib)
+    res = BearingFrictionResult(
+        drive_torque_Nm=f["drive_torque_Nm"],
+        outer_ring_torque_Nm=f["outer_ring_torque_Nm"],
+        power_input_W=f["power_input_W"],
+        power_dissipated_W=f["power_dissipated_W"],
+        cage_speed_rad_s=f["cage_speed_rad_s"],
+        cage_speed_pure_rolling_rad_s=f["cage_speed_pure_rolling_rad_s"],
+        roller_spin_rad_s=np.asarray(f["roller_spin_rad_s"]),
+        roller_spin_pure_rolling_rad_s=np.asarray(f["roller_spin_pure_rolling_rad_s"]),
+        power_W={k: dict(v) for k, v in f["power_W"].items()},
+        Lambda_min=dict(f["Lambda_min"]),
+        phi_max=dict(f["phi_max"]),
+        converged=f["status"] == 0,
+        runtime_s=dist.runtime_s + time.perf_counter() - t0,
+    )
+    return dist, res

@@ -84,3 +84,57 @@ def test_infeasible_and_invalid_loads(b32216):
         load_distribution(g, b, m, axial_N=500.0, axial_offset_m=1e-5)
     with pytest.raises(kegel.KegelInputError, match="expected finite loads"):
         load_distribution(g, b, m, axial_N=-5.0)
+
+
+from kegel.quasi_static import bearing_friction  # noqa: E402
+from kegel.tribology import load_friction  # noqa: E402
+
+RPM = math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def oil():
+    return kegel.load_lubricant("FVA3"), load_friction()
+
+
+def friction_at(b32216, oil, *, T=323.15, n=2000.0, Fa=6000.0, Fr=0.0, method="independent"):
+    g, b, m = b32216
+    lub, fr = oil
+    return bearing_friction(g, b, m, lub, fr, temperature_K=T, inner_speed_rad_s=n * RPM, axial_N=Fa, radial_N=Fr,
+                            method=method, slices=15)
+
+
+@pytest.mark.parametrize("T, n, Fr", [(323.15, 500.0, 0.0), (323.15, 4000.0, 0.0), (373.15, 500.0, 0.0),
+                                      (323.15, 2000.0, 6500.0)])
+def test_power_balance_and_torque_balance(b32216, oil, T, n, Fr):
+    dist, f = friction_at(b32216, oil, T=T, n=n, Fr=Fr)
+    assert f.converged
+    assert abs(f.power_balance_error) < 5e-3
+    # the whole bearing is in balance about its axis: drive torque = outer-ring reaction
+    assert f.outer_ring_torque_Nm == pytest.approx(f.drive_torque_Nm, rel=1e-8)
+    assert f.drive_torque_Nm > 0
+    # the breakdown explains the whole torque
+    by_contact = f.torque_by_contact_Nm(n * RPM)
+    assert sum(by_contact.values()) == pytest.approx(f.drive_torque_Nm, rel=5e-3)
+
+
+def test_torque_grows_with_viscosity_and_speed_in_full_film(b32216, oil):
+    warm = friction_at(b32216, oil, T=323.15, n=2000.0)[1]
+    cool = friction_at(b32216, oil, T=313.15, n=2000.0)[1]
+    fast = friction_at(b32216, oil, T=323.15, n=4000.0)[1]
+    assert min(warm.Lambda_min.values()) > 3  # full film
+    assert cool.drive_torque_Nm > warm.drive_torque_Nm
+    assert fast.drive_torque_Nm > warm.drive_torque_Nm
+
+
+def test_light_load_shows_more_slip(b32216, oil):
+    heavy = friction_at(b32216, oil, Fa=6000.0, n=4000.0)[1]
+    light = friction_at(b32216, oil, Fa=1000.0, n=4000.0)[1]
+    assert abs(light.cage_slip) > abs(heavy.cage_slip)
+
+
+def test_mixed_friction_raises_solid_shares(b32216, oil):
+    hot = friction_at(b32216, oil, T=373.15, n=500.0)[1]
+    assert hot.phi_max["inner_raceway"] > 0.01
+    by_mech = hot.torque_by_mechanism_Nm(500 * RPM)
+    assert by_mech["solid_rolling"] > 0
