@@ -13,7 +13,8 @@ Commands
 ``kegel losses 32208 [--oil-level flooded ...] [--plot losses.png]``
     Hydraulic losses by correlation against speed and oil level.
 ``kegel run SCENE [--set KEY=VALUE ...] [--output DIR]``
-    Run a scene. Until the solvers land it prints and writes the scene's derived inputs.
+    Run a scene: quasi-static load distribution, friction by contact and mechanism, hydraulic
+    loss of an oil bath; a table, results.json, results.csv and plots.
 
 Every command takes ``--format json`` for machine-readable output on stdout (field names carry
 their units, see README.md). Input errors print one line naming the file, key, value and
@@ -33,7 +34,6 @@ from typing import Any, Sequence
 from .data import load_bearing, load_lubricant, load_material
 from .errors import KegelInputError
 from .geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
-from .io import atomic_write_json, provenance
 from .lubricant import lubricant_state
 from .scene import Scene, load_scene
 from .units import parse_quantity
@@ -290,42 +290,41 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_run(args: argparse.Namespace) -> int:
-    t0 = time.perf_counter()
+    from .run import run_scene
+
     scene = load_scene(args.scene, args.set or ())
-    summary = _scene_summary(scene)
     out_dir = Path(args.output) if args.output else scene.output_directory
-    summary["runtime_s"] = time.perf_counter() - t0
-    summary["provenance"] = provenance()
-    summary["stage"] = "inputs"  # the solvers (quasi-static, dynamic, hydraulic) add results here
-    path = atomic_write_json(out_dir / "inputs.json", summary)
+    result = run_scene(scene, out_dir, progress=args.format != "json")
     if args.format == "json":
-        _json_out({**summary, "files": {"inputs": str(path)}})
+        _json_out({"scene": scene.name, "files": result.files, "runtime_s": result.runtime_s,
+                   "points": result.points})
         return 0
     g = scene.geometry
-    lub = scene.lubrication
+    f = scene.fidelity
     print(f"Scene '{scene.name}' ({scene.source})")
     if scene.description:
         print(f"  {scene.description}")
-    print(f"  bearing {g.designation}: d = {g.bore_diameter_m*1e3:g} mm, D = {g.outer_diameter_m*1e3:g} mm, "
-          f"d_m = {g.pitch_diameter_m*1e3:g} mm, Z = {g.roller_count}, contact angle "
-          f"{math.degrees(g.cup_angle_rad):.2f} deg")
-    print(f"  lubricant {scene.lubricant.name}; lubrication {lub.mode}"
-          + (f", oil level {lub.oil_level_m*1e3:.2f} mm ({lub.oil_level_as_written})" if lub.oil_level_m else ""))
-    f = scene.fidelity
-    print(f"  fidelity {f.name}: {f.slices} slices, rib {f.rib_model}"
-          + (f" {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "")
-          + f", cage {'on' if f.cage else 'off'}, {f.solution}, hydraulic {f.hydraulic}")
+    print(f"  bearing {g.designation} (Z = {g.roller_count}, contact angle {math.degrees(g.cup_angle_rad):.2f} deg), "
+          f"lubricant {scene.lubricant.name}, {scene.lubrication.mode}"
+          + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
+    print(f"  fidelity {f.name}: quasi-static, {f.slices} slices (alternative slicing), rib closed-form Hertz, "
+          f"hydraulic {f.hydraulic}")
     rows = []
-    for p in summary["operating_points"]:
-        s = p["lubricant_state"]
-        axial = f"{p['axial_load_N']/1e3:g} kN" if p["axial_load_N"] is not None else f"{p['axial_offset_m']*1e6:g} um"
-        rows.append((p["index"], p["speed_rpm"], axial, p["radial_load_N"] / 1e3, p["temperature_degC"],
-                     s["dynamic_viscosity_Pas"] * 1e3, s["kinematic_viscosity_m2_s"] * 1e6, s["density_kg_m3"],
-                     s["pressure_viscosity_coefficient_1_Pa"] * 1e9))
-    _print_table(("#", "n [rpm]", "axial", "Fr [kN]", "T [degC]", "eta [mPa s]", "nu [mm2/s]", "rho [kg/m3]",
-                  "alpha_p [1/GPa]"), rows)
-    print("Friction and hydraulic losses: not computed yet (the quasi-static solver lands with issue 5).")
-    print(f"inputs written to {path} ({summary['runtime_s']*1e3:.0f} ms)")
+    for p in result.points:
+        mech = p["torque_by_mechanism_Nm"]
+        axial = f"{p['axial_load_N'] / 1e3:g}" if p["axial_load_N"] is not None else f"{p['axial_force_N'] / 1e3:.2f}*"
+        rows.append((p["index"], p["speed_rpm"], p["temperature_degC"], axial, p["radial_load_N"] / 1e3,
+                     p["friction_torque_Nm"], p["hydraulic_torque_Nm"], p["total_torque_Nm"],
+                     100 * p["cage_slip"], mech["ehl_sliding"] + mech["solid_sliding"],
+                     mech["ehl_rolling"] + mech["solid_rolling"] + mech["hysteresis"],
+                     p["torque_by_contact_Nm"]["rib"], min(p["Lambda_min"].values())))
+    _print_table(("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
+                  "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "rib [Nm]", "Lambda_min"), rows)
+    if any(p["axial_load_N"] is None for p in result.points):
+        print("  * axial force carried at the prescribed axial offset")
+    print(f"results: {result.files['json']}, {result.files['csv']}")
+    print(f"plots:   {result.files['torque_plot']}, {result.files['breakdown_plot']}, {result.files['loads_plot']}")
+    print(f"runtime: {result.runtime_s:.2f} s for {len(result.points)} operating point(s)")
     return 0
 
 

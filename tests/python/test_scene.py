@@ -93,29 +93,40 @@ def test_oil_level_keywords_and_lengths():
     assert kegel.load_scene(base, ["lubrication.oil_level=35 mm"]).lubrication.oil_level_m == pytest.approx(0.035)
 
 
-def test_run_writes_inputs_atomically_with_provenance(tmp_path):
+def test_run_writes_results_plots_and_provenance_atomically(tmp_path):
     out = tmp_path / "out"
-    res = run_kegel("run", str(EXAMPLES / "32216_table1.toml"), "--output", str(out), "--set", "operating.temperature=50 degC")
+    res = run_kegel("run", str(EXAMPLES / "32216_table1.toml"), "--output", str(out),
+                    "--set", "operating.temperature=50 degC", "--set", 'operating.speed=["500 rpm", "4000 rpm"]',
+                    "--set", "model.slices=12")
     assert res.returncode == 0, res.stderr
-    assert "inputs written to" in res.stdout
+    assert "M_fric [Nm]" in res.stdout and "results:" in res.stdout and "plots:" in res.stdout
     files = sorted(p.name for p in out.iterdir())
-    assert files == ["inputs.json"]  # no temporary file left behind
-    data = json.loads((out / "inputs.json").read_text())
+    assert files == ["breakdown.png", "results.csv", "results.json", "roller_loads_and_slip.png", "torque.png"]
+    data = json.loads((out / "results.json").read_text())
     assert data["provenance"]["kegel_version"] == kegel.__version__
     assert data["provenance"]["sundials_version"].startswith("6.")
-    assert data["fidelity"]["slices"] == 30
+    assert data["fidelity"]["slices"] == 12
     assert data["scene"]["resolved"]["operating"]["temperature"] == "50 degC"
-    p0 = data["operating_points"][0]
-    assert p0["lubricant_state"]["dynamic_viscosity_Pas"] == pytest.approx(0.0525, rel=5e-3)
-    assert all(math.isfinite(p["speed_rpm"]) for p in data["operating_points"])
+    pts = data["points"]
+    assert len(pts) == 2
+    for p in pts:
+        assert p["lubricant_state"]["dynamic_viscosity_Pas"] == pytest.approx(0.0525, rel=5e-3)
+        assert abs(p["power_balance_error"]) < 5e-3
+        assert p["total_torque_Nm"] == pytest.approx(p["friction_torque_Nm"] + p["hydraulic_torque_Nm"])
+        assert p["hydraulic_torque_Nm"] > 0  # an oil bath
+        assert sum(p["torque_by_contact_Nm"].values()) == pytest.approx(p["friction_torque_Nm"], rel=5e-3)
+    assert pts[1]["friction_torque_Nm"] > pts[0]["friction_torque_Nm"]
+    csv_lines = (out / "results.csv").read_text().splitlines()
+    assert len(csv_lines) == 3 and csv_lines[0].startswith("index,speed_rpm")
 
 
 def test_run_json_on_stdout(tmp_path):
-    res = run_kegel("run", str(EXAMPLES / "32208_flooded.toml"), "--output", str(tmp_path), "--format", "json")
+    res = run_kegel("run", str(EXAMPLES / "32208_flooded.toml"), "--output", str(tmp_path), "--format", "json",
+                    "--set", 'operating.speed=["1000 rpm", "3000 rpm"]', "--set", "model.slices=10")
     assert res.returncode == 0, res.stderr
     data = json.loads(res.stdout)
-    assert data["bearing"] == "32208" and len(data["operating_points"]) == 8
-    assert data["files"]["inputs"].endswith("inputs.json")
+    assert len(data["points"]) == 2 and data["files"]["json"].endswith("results.json")
+    assert all(p["hydraulic"]["correlation"] == "liebrecht" for p in data["points"])
 
 
 def test_check_json():

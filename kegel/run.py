@@ -1,0 +1,257 @@
+"""Running a scene: every operating point's load distribution, friction and hydraulic loss.
+
+:func:`run_scene` solves each operating point of a scene with the quasi-static model
+(``kegel.quasi_static``), adds the hydraulic loss of an oil bath from the chosen correlation
+(``kegel.correlations``) and writes, atomically and next to each other: ``results.json`` (every
+figure, the resolved scene, the fidelity, the provenance), ``results.csv`` (one row per
+operating point) and plots (torque against the swept variable, the breakdown by contact and
+mechanism, the roller loads around the circumference, the cage slip).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from .correlations import hydraulic_torques
+from .io import atomic_write_json, atomic_write_text, provenance
+from .lubricant import lubricant_state
+from .quasi_static import bearing_friction, bearing_model
+from .scene import Scene
+from .tribology import load_friction
+from . import _core
+
+__all__ = ["RunResult", "run_scene"]
+
+CONTACTS = ("outer_raceway", "inner_raceway", "rib")
+MECHANISMS = ("ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis")
+
+
+@dataclass
+class RunResult:
+    """Results of a scene run: one dictionary per operating point and the files written."""
+
+    points: list[dict[str, Any]]
+    files: dict[str, str]
+    runtime_s: float
+
+
+class _Progress:
+    """A progress line on stderr (time per point, ETA) for runs longer than a second."""
+
+    def __init__(self, total: int, enabled: bool) -> None:
+        self.total, self.enabled, self.t0, self.shown = total, enabled, time.perf_counter(), False
+
+    def update(self, done: int, label: str) -> None:
+        if not self.enabled:
+            return
+        elapsed = time.perf_counter() - self.t0
+        if elapsed < 1.0 and not self.shown:
+            return
+        self.shown = True
+        eta = elapsed / done * (self.total - done) if done else float("nan")
+        bar = "#" * int(30 * done / self.total)
+        sys.stderr.write(f"\r[{bar:<30}] {done}/{self.total} {label}  {elapsed:5.1f} s, ETA {eta:5.1f} s ")
+        sys.stderr.flush()
+
+    def close(self) -> None:
+        if self.shown:
+            sys.stderr.write("\n")
+
+
+def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: bool = True,
+              on_point: Callable[[dict[str, Any]], None] | None = None) -> RunResult:
+    """Solve every operating point of a scene and write the results (see the module docstring)."""
+    t_start = time.perf_counter()
+    out = Path(output_dir) if output_dir is not None else scene.output_directory
+    g, b, m = scene.geometry, scene.bearing, scene.material
+    fid = scene.fidelity
+    method = "alternative_slicing"
+    friction = load_friction()
+    model = bearing_model(g, b, m, slices=fid.slices, method=method)
+    data = _core.quasi_static.BearingData(model)
+    bar = _Progress(len(scene.operating_points), progress)
+    points: list[dict[str, Any]] = []
+    for i, op in enumerate(scene.operating_points):
+        dist, fr = bearing_friction(
+            g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
+            axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
+            misalignment_rad=op.misalignment_rad, model=model, data=data,
+        )
+        state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+        hyd = None
+        if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
+            hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
+                                    oil_level_m=scene.lubrication.oil_level_m,
+                                    cage_speed_rad_s=fr.cage_speed_rad_s)
+        w = op.speed_rad_s
+        point = {
+            **op.as_dict(),
+            "friction_torque_Nm": fr.drive_torque_Nm,
+            "hydraulic_torque_Nm": hyd.total_Nm if hyd else 0.0,
+            "total_torque_Nm": fr.drive_torque_Nm + (hyd.total_Nm if hyd else 0.0),
+            "outer_ring_torque_Nm": fr.outer_ring_torque_Nm,
+            "power_input_W": fr.power_input_W,
+            "power_dissipated_W": fr.power_dissipated_W,
+            "power_balance_error": fr.power_balance_error,
+            "cage_speed_rpm": fr.cage_speed_rad_s * 30 / math.pi,
+            "cage_slip": fr.cage_slip,
+            "torque_by_contact_Nm": fr.torque_by_contact_Nm(w),
+            "torque_by_mechanism_Nm": fr.torque_by_mechanism_Nm(w),
+            "power_W": fr.power_W,
+            "Lambda_min": fr.Lambda_min,
+            "phi_max": fr.phi_max,
+            "hydraulic": hyd.as_dict() if hyd else None,
+            "roller_azimuth_rad": dist.azimuth_rad.tolist(),
+            "roller_outer_N": dist.outer_N.tolist(),
+            "roller_inner_N": dist.inner_N.tolist(),
+            "roller_rib_N": dist.rib_N.tolist(),
+            "axial_force_N": dist.axial_force_N,
+            "ring_displacement_m": dist.ring_displacement_m.tolist(),
+            "load_residual": dist.residual,
+            "converged": fr.converged,
+            "runtime_s": fr.runtime_s,
+            "lubricant_state": state.as_dict(),
+        }
+        points.append(point)
+        if on_point:
+            on_point(point)
+        bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
+    bar.close()
+    runtime = time.perf_counter() - t_start
+    out.mkdir(parents=True, exist_ok=True)
+    files = {
+        "json": str(atomic_write_json(out / "results.json", {
+            "scene": {"name": scene.name, "description": scene.description, "file": scene.source,
+                      "resolved": scene.resolved},
+            "bearing": b.designation, "lubricant": scene.lubricant.name, "material": m.name,
+            "friction_parameters": friction.name,
+            "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
+            "fidelity": {**fid.as_dict(), "slice_method": method, "rib_model_used": "hertz",
+                         "solution_used": "quasi_static"},
+            "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime, "points": points,
+        })),
+        "csv": str(atomic_write_text(out / "results.csv", _csv(points))),
+    }
+    files.update(_plots(scene, points, out))
+    return RunResult(points=points, files=files, runtime_s=runtime)
+
+
+def _csv(points: list[dict[str, Any]]) -> str:
+    cols = ["index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
+            "axial_force_N", "friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm", "cage_speed_rpm",
+            "cage_slip", "power_input_W", "power_balance_error"]
+    cols += [f"torque_{c}_Nm" for c in CONTACTS] + [f"torque_{k}_Nm" for k in MECHANISMS]
+    buf = io.StringIO()
+    w = csv.writer(buf)
+    w.writerow(cols)
+    for p in points:
+        row = [p.get(c) for c in cols[:14]]
+        row += [p["torque_by_contact_Nm"][c] for c in CONTACTS]
+        row += [p["torque_by_mechanism_Nm"][k] for k in MECHANISMS]
+        w.writerow(["" if v is None else v for v in row])
+    return buf.getvalue()
+
+
+def _save(fig, path: Path) -> str:
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
+    os.close(fd)
+    fig.savefig(tmp, dpi=110)
+    os.replace(tmp, path)
+    return str(path)
+
+
+def _plots(scene: Scene, points: list[dict[str, Any]], out: Path) -> dict[str, str]:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    files: dict[str, str] = {}
+    sweep = next((s for s in scene.swept if s != "temperature"), None) or (scene.swept[0] if scene.swept else None)
+    xkey, xlabel, xscale = {
+        "speed": ("speed_rpm", "shaft speed [rpm]", 1.0),
+        "radial_load": ("radial_load_N", "radial load [kN]", 1e-3),
+        "axial_load": ("axial_load_N", "axial load [kN]", 1e-3),
+        "axial_offset": ("axial_offset_m", "axial offset [um]", 1e6),
+        "temperature": ("temperature_degC", "temperature [degC]", 1.0),
+        None: ("index", "operating point", 1.0),
+    }[sweep]
+    groups: dict[float, list[dict[str, Any]]] = {}
+    for p in points:
+        key = p["temperature_degC"] if sweep != "temperature" else 0.0
+        groups.setdefault(round(key, 6), []).append(p)
+    title = f"{scene.name} ({scene.bearing.designation}, {scene.lubricant.name})"
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for T, ps in groups.items():
+        x = [p[xkey] * xscale for p in ps]
+        lbl = f"{T:g} degC" if sweep != "temperature" else ""
+        ax.plot(x, [p["total_torque_Nm"] for p in ps], marker="o", label=f"total {lbl}")
+        ax.plot(x, [p["friction_torque_Nm"] for p in ps], ls="--", label=f"friction {lbl}")
+        if any(p["hydraulic_torque_Nm"] for p in ps):
+            ax.plot(x, [p["hydraulic_torque_Nm"] for p in ps], ls=":", label=f"hydraulic {lbl}")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("torque [N m]")
+    ax.set_title(title, fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    files["torque_plot"] = _save(fig, out / "torque.png")
+    plt.close(fig)
+
+    # breakdown by contact x mechanism, stacked, for the first group
+    ps = next(iter(groups.values()))
+    x = np.array([p[xkey] * xscale for p in ps])
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    bottom = np.zeros(len(ps))
+    for c in CONTACTS:
+        for k in MECHANISMS:
+            vals = np.array([p["power_W"][c][k] / p["speed_rad_s"] for p in ps])
+            if np.max(np.abs(vals)) <= 1e-6 * max(1e-12, max(p["friction_torque_Nm"] for p in ps)):
+                continue
+            ax.bar(x, vals, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
+                   label=f"{c.replace('_', ' ')}: {k.replace('_', ' ')}")
+            bottom += vals
+    hyd = np.array([p["hydraulic_torque_Nm"] for p in ps])
+    if hyd.any():
+        ax.bar(x, hyd, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
+               label="hydraulic (Liebrecht)", color="0.7")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("torque [N m]")
+    ax.set_title(f"breakdown at {ps[0]['temperature_degC']:g} degC", fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    files["breakdown_plot"] = _save(fig, out / "breakdown.png")
+    plt.close(fig)
+
+    # roller loads around the circumference and the cage slip
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    for p in (ps[0], ps[-1]):
+        psi = np.degrees(p["roller_azimuth_rad"])
+        a1.plot(psi, p["roller_inner_N"], marker="o", label=f"inner, point {p['index']}")
+        a1.plot(psi, p["roller_rib_N"], marker="x", ls=":", label=f"rib, point {p['index']}")
+    a1.set_xlabel("roller azimuth from the radial load [deg]")
+    a1.set_ylabel("roller load [N]")
+    a1.legend(fontsize=8)
+    for T, gp in groups.items():
+        a2.plot([p[xkey] * xscale for p in gp], [100 * p["cage_slip"] for p in gp], marker="o",
+                label=f"{T:g} degC" if sweep != "temperature" else None)
+    a2.set_xlabel(xlabel)
+    a2.set_ylabel("cage slip [%]")
+    if sweep != "temperature":
+        a2.legend(fontsize=8)
+    fig.suptitle(title, fontsize=9)
+    fig.tight_layout()
+    files["loads_plot"] = _save(fig, out / "roller_loads_and_slip.png")
+    plt.close(fig)
+    return files
