@@ -1,0 +1,99 @@
+"""Speed against error of the quasi-static bearing solution (32216, Table 1 conditions).
+
+For each fidelity level (slice model and slice count) it reports the median runtime of one
+operating point (load distribution + friction, cold: a fresh model each time, and warm: the
+next point of a sweep) and the deviation of the friction torque from the finest level; a 50-point
+speed sweep at the default level; writes benchmarks/results/quasi_static.{json,png}.
+
+Run: .venv/bin/python benchmarks/bench_quasi_static.py
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import statistics
+import time
+from pathlib import Path
+
+import kegel
+from kegel.quasi_static import bearing_friction, bearing_model
+from kegel.tribology import load_friction
+from kegel import _core
+
+OUT = Path(__file__).resolve().parent / "results"
+RPM = math.pi / 30
+LEVELS = [("independent", 10), ("independent", 30), ("alternative_slicing", 10), ("alternative_slicing", 20),
+          ("alternative_slicing", 30), ("alternative_slicing", 60), ("alternative_slicing", 100)]
+FINEST = ("alternative_slicing", 100)
+DEFAULT = ("alternative_slicing", 30)
+
+
+def main() -> None:
+    b = kegel.load_bearing("32216")
+    m = kegel.load_material("bearing_steel")
+    g = kegel.derive_geometry(b, m)
+    lub, fr = kegel.load_lubricant("FVA3"), load_friction()
+    kw = dict(temperature_K=323.15, inner_speed_rad_s=2000 * RPM, axial_N=6000.0)
+    rows = []
+    torque = {}
+    for method, n in LEVELS:
+        cold, warm = [], []
+        repeats = 5 if n <= 30 else 3
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            model = bearing_model(g, b, m, slices=n, method=method)
+            data = _core.quasi_static.BearingData(model)
+            _, f = bearing_friction(g, b, m, lub, fr, model=model, data=data, **kw)
+            cold.append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            bearing_friction(g, b, m, lub, fr, model=model, data=data,
+                             **{**kw, "inner_speed_rad_s": 2050 * RPM})
+            warm.append(time.perf_counter() - t0)
+        torque[(method, n)] = f.drive_torque_Nm
+        rows.append({"method": method, "slices": n, "cold_ms": 1e3 * statistics.median(cold),
+                     "warm_ms": 1e3 * statistics.median(warm), "torque_Nm": f.drive_torque_Nm})
+    ref = torque[FINEST]
+    for r in rows:
+        r["deviation_from_finest"] = r["torque_Nm"] / ref - 1
+    # 50-point speed sweep at the default level (warm-started along the sweep)
+    model = bearing_model(g, b, m, slices=DEFAULT[1], method=DEFAULT[0])
+    data = _core.quasi_static.BearingData(model)
+    t0 = time.perf_counter()
+    for k in range(50):
+        bearing_friction(g, b, m, lub, fr, model=model, data=data,
+                         **{**kw, "inner_speed_rad_s": (500 + 3500 * k / 49) * RPM})
+    sweep_s = time.perf_counter() - t0
+
+    print("quasi-static solution, 32216, Fa = 6 kN, 2000 rpm, 50 degC (medians; finest = AST, 100 slices)")
+    print(f"{'slice model':22s} {'slices':>6s} {'cold [ms]':>10s} {'warm [ms]':>10s} {'torque [N m]':>13s} {'vs finest':>10s}")
+    for r in rows:
+        print(f"{r['method']:22s} {r['slices']:6d} {r['cold_ms']:10.1f} {r['warm_ms']:10.1f} {r['torque_Nm']:13.5f} "
+              f"{100 * r['deviation_from_finest']:9.3f}%")
+    print(f"50-point speed sweep (500-4000 rpm) at the default level: {sweep_s:.2f} s "
+          f"({1e3 * sweep_s / 50:.0f} ms per point); target per point: 20 ms")
+    OUT.mkdir(exist_ok=True)
+    (OUT / "quasi_static.json").write_text(json.dumps({"levels": rows, "sweep_50_points_s": sweep_s}, indent=2))
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for method, marker in (("independent", "s"), ("alternative_slicing", "o")):
+        sel = [r for r in rows if r["method"] == method]
+        ax.loglog([r["warm_ms"] for r in sel], [max(abs(r["deviation_from_finest"]), 1e-6) for r in sel],
+                  marker=marker, label=method.replace("_", " "))
+        for r in sel:
+            ax.annotate(str(r["slices"]), (r["warm_ms"], max(abs(r["deviation_from_finest"]), 1e-6)), fontsize=7)
+    ax.set_xlabel("runtime per operating point, warm [ms]")
+    ax.set_ylabel("|torque / finest - 1|")
+    ax.set_title("quasi-static 32216: speed against error (labels: slices)", fontsize=9)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(OUT / "quasi_static.png", dpi=110)
+    print(f"table and plot: {OUT / 'quasi_static.json'}, {OUT / 'quasi_static.png'}")
+
+
+if __name__ == "__main__":
+    main()
