@@ -151,30 +151,44 @@ RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<Slice
   const Eigen::Vector3d h(1e-9, 1e-9, 1e-9 / L);
   const Eigen::Vector3d limit(5e-6, 5e-6, 5e-6 / L);
   RollerEval r = eval_roller(m, d, geo, e, j, ring, x, omega_c);
+  RollerState& st = d.rollers[j];
+  auto norm = [&](const Eigen::Vector3d& q) { return std::hypot(std::hypot(q[0], q[1]), q[2] / L); };
+  bool fresh = false;  // the Jacobian was computed at this iterate
   for (int it = 0; it < 60; ++it) {
     const double res = std::max({std::abs(r.residual[0]), std::abs(r.residual[1]), std::abs(r.residual[2]) / L});
     if (res <= 1e-11 * scale) break;
-    Eigen::Matrix3d J;
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector3d xp = x;
-      xp[k] += h[k];
-      J.col(k) = (eval_roller(m, d, geo, e, j, ring, xp, omega_c).residual - r.residual) / h[k];
+    if (!st.has_jacobian) {
+      for (int k = 0; k < 3; ++k) {
+        Eigen::Vector3d xp = x;
+        xp[k] += h[k];
+        st.jacobian.col(k) = (eval_roller(m, d, geo, e, j, ring, xp, omega_c).residual - r.residual) / h[k];
+      }
+      st.has_jacobian = true;
+      fresh = true;
     }
-    Eigen::Vector3d dx = J.fullPivLu().solve(-r.residual);
+    Eigen::Vector3d dx = st.jacobian.fullPivLu().solve(-r.residual);
+    if (!dx.allFinite()) {
+      st.has_jacobian = false;
+      if (fresh) break;
+      continue;
+    }
     const double s = std::max({std::abs(dx[0]) / limit[0], std::abs(dx[1]) / limit[1], std::abs(dx[2]) / limit[2], 1.0});
     dx /= s;
-    // backtracking on the residual norm (scaled moment)
-    auto norm = [&](const Eigen::Vector3d& q) { return std::hypot(std::hypot(q[0], q[1]), q[2] / L); };
     const double n0 = norm(r.residual);
+    RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + dx, omega_c);
+    if (norm(rn.residual) > 0.5 * n0 && !fresh) {
+      // the reused Jacobian no longer serves: take a fresh one at this iterate
+      st.has_jacobian = false;
+      continue;
+    }
     double step = 1.0;
-    RollerEval rn;
-    for (int b = 0; b < 12; ++b) {
-      rn = eval_roller(m, d, geo, e, j, ring, x + step * dx, omega_c);
-      if (norm(rn.residual) < n0 || b == 11) break;
+    for (int b = 0; b < 12 && norm(rn.residual) >= n0; ++b) {  // backtracking (fresh Jacobian)
       step *= 0.5;
+      rn = eval_roller(m, d, geo, e, j, ring, x + step * dx, omega_c);
     }
     x += step * dx;
     r = rn;
+    fresh = false;
   }
   d.rollers[j].u_m = x[0];
   d.rollers[j].w_m = x[1];
@@ -289,6 +303,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
   };
   int status = 1;
   d.iterations = 0;
+  bool fresh_needed = false;
   const Eigen::Matrix<double, 5, 1> h = (Eigen::Matrix<double, 5, 1>() << 1e-9, 1e-9, 1e-9, 1e-8, 1e-8).finished();
   for (int it = 0; it < 100; ++it) {
     ++d.iterations;
@@ -297,18 +312,29 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
       break;
     }
     const std::vector<RollerState> base = d.rollers;
-    Eigen::MatrixXd J(ndof, ndof);
-    Eigen::Matrix<double, 5, 1> fp;
-    for (int c = 0; c < ndof; ++c) {
+    int mask = 0;
+    for (int c = 0; c < ndof; ++c) mask |= 1 << idx[c];
+    const bool reuse = d.ring_jacobian_mask_ == mask && !fresh_needed;
+    if (!reuse) {
+      d.ring_jacobian_.resize(ndof, ndof);
+      Eigen::Matrix<double, 5, 1> fp;
+      for (int c = 0; c < ndof; ++c) {
+        d.rollers = base;
+        Eigen::Matrix<double, 5, 1> xp = x;
+        xp[idx[c]] += h[idx[c]];
+        residual(xp, fp);
+        d.ring_jacobian_.col(c) = (active(fp) - active(full)) / h[idx[c]];
+      }
       d.rollers = base;
-      Eigen::Matrix<double, 5, 1> xp = x;
-      xp[idx[c]] += h[idx[c]];
-      residual(xp, fp);
-      J.col(c) = (active(fp) - active(full)) / h[idx[c]];
+      d.ring_jacobian_mask_ = mask;
     }
-    d.rollers = base;
+    const Eigen::MatrixXd& J = d.ring_jacobian_;
     Eigen::VectorXd dx = J.fullPivLu().solve(-active(full));
-    if (!dx.allFinite()) return 1;
+    if (!dx.allFinite()) {
+      if (!reuse) return 1;
+      fresh_needed = true;
+      continue;
+    }
     const double lim = 10e-6;
     double s = 1.0;
     for (int c = 0; c < ndof; ++c) s = std::max(s, std::abs(dx[c]) * (idx[c] >= 3 ? v.pitch_radius_m : 1.0) / lim);
@@ -316,14 +342,26 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     double step = 1.0;
     const double n0 = active(full).norm();
     Eigen::Matrix<double, 5, 1> fn;
-    for (int b = 0; b < 20; ++b) {
+    d.rollers = base;
+    {
+      Eigen::Matrix<double, 5, 1> xt = x;
+      for (int c = 0; c < ndof; ++c) xt[idx[c]] += dx[c];
+      residual(xt, fn);
+    }
+    if (reuse && active(fn).norm() > 0.5 * n0) {
+      // the reused Jacobian no longer serves: a fresh one at this iterate
+      d.rollers = base;
+      fresh_needed = true;
+      continue;
+    }
+    for (int b = 0; b < 20 && active(fn).norm() >= n0; ++b) {
+      step *= 0.5;
       d.rollers = base;
       Eigen::Matrix<double, 5, 1> xt = x;
       for (int c = 0; c < ndof; ++c) xt[idx[c]] += step * dx[c];
       residual(xt, fn);
-      if (active(fn).norm() < n0 || b == 19) break;
-      step *= 0.5;
     }
+    fresh_needed = false;
     for (int c = 0; c < ndof; ++c) x[idx[c]] += step * dx[c];
     full = fn;
   }

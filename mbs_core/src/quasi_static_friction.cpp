@@ -133,6 +133,26 @@ bool brent(F f, double a, double b, double fa, double fb, double tol, double& ro
   return false;
 }
 
+// Secant iteration from x0, x1; false when it does not converge to tol within 12 steps.
+template <class F>
+bool secant(F f, double x0, double x1, double tol, double& root) {
+  double f0 = f(x0), f1 = f(x1);
+  for (int it = 0; it < 12; ++it) {
+    if (f1 == f0) return false;
+    const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    if (!std::isfinite(x2)) return false;
+    x0 = x1;
+    f0 = f1;
+    x1 = x2;
+    if (std::abs(x1 - x0) <= tol) {
+      root = x1;
+      return true;
+    }
+    f1 = f(x1);
+  }
+  return false;
+}
+
 }  // namespace
 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
@@ -238,35 +258,47 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         continue;
       }
       auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false).spin_moment; };
-      double lo = w_pure * 0.9, hi = w_pure * 1.1;
-      double flo = S(lo), fhi = S(hi);
-      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-        lo = w_pure + (lo - w_pure) * 2.0;
-        hi = w_pure + (hi - w_pure) * 2.0;
-        flo = S(lo);
-        fhi = S(hi);
-      }
+      const double tol = 1e-13 * std::abs(w_pure);
       double root = w_pure;
-      if (!brent(S, lo, hi, flo, fhi, 1e-13 * std::abs(w_pure), root)) status = 1;
+      // warm start from the previous slip of this roller, secant first, Brent as the fallback
+      const double guess = w_pure * d.spin_ratio_[j];
+      if (!secant(S, guess, guess * (1.0 + 1e-7), tol, root)) {
+        double lo = w_pure * 0.9, hi = w_pure * 1.1;
+        double flo = S(lo), fhi = S(hi);
+        for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+          lo = w_pure + (lo - w_pure) * 2.0;
+          hi = w_pure + (hi - w_pure) * 2.0;
+          flo = S(lo);
+          fhi = S(hi);
+        }
+        if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
+      }
       spins[j] = root;
       tangential += eval(r, root, w_c, w_i, lub, fp, race, ribp, false).axis_moment;
     }
     return tangential;
   };
   std::vector<double> spins(Z);
+  if (int(d.spin_ratio_.size()) != Z) d.spin_ratio_.assign(Z, 1.0);
   auto C = [&](double w_c) { return spin_for_cage(w_c, spins); };
-  double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
-  for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-    lo = wc0 + (lo - wc0) * 2.0;
-    hi = wc0 + (hi - wc0) * 2.0;
-    flo = C(lo);
-    fhi = C(hi);
-  }
   double w_c = wc0;
-  if (!brent(C, lo, hi, flo, fhi, 1e-13 * std::abs(wc0), w_c)) status = 1;
+  const double tol_c = 1e-13 * std::abs(wc0);
+  const double guess = wc0 * d.cage_ratio_;
+  if (!secant(C, guess, guess * (1.0 + 1e-7), tol_c, w_c)) {
+    double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
+    for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+      lo = wc0 + (lo - wc0) * 2.0;
+      hi = wc0 + (hi - wc0) * 2.0;
+      flo = C(lo);
+      fhi = C(hi);
+    }
+    if (!brent(C, lo, hi, flo, fhi, tol_c, w_c)) status = 1;
+  }
   out.cage_residual_Nm = spin_for_cage(w_c, spins);
   out.cage_speed_rad_s = w_c;
   out.roller_spin_rad_s = spins;
+  d.cage_ratio_ = w_c / wc0;
+  for (int j = 0; j < Z; ++j) d.spin_ratio_[j] = spins[j] / (wR0 * w_c / wc0);
   out.inner_speed_rad_s = w_i;
 
   // torques and powers at the solution

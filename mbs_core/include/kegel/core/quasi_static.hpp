@@ -95,7 +95,11 @@ struct RollerState {
   double u_m = 0.0, w_m = 0.0, tilt_rad = 0.0;  ///< roller DOF (radial, axial, tilt)
   double outer_N = 0.0, inner_N = 0.0, rib_N = 0.0;  ///< contact force magnitudes
   double residual = 0.0;                        ///< |roller equilibrium residual| / load scale
+  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();  ///< reused while it converges (chord Newton)
+  bool has_jacobian = false;
 };
+
+struct BearingFriction;
 
 /// State and workspace (warm start: the previous solution).
 class BearingData {
@@ -112,8 +116,15 @@ class BearingData {
 
  private:
   friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
+  friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
+                                       const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
+                                       const SurfacePair&, BearingFriction&) noexcept;
+  std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
+  double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
   std::vector<SliceGeometry> geo_;
   std::vector<double> e_;
+  Eigen::MatrixXd ring_jacobian_;  // reused across iterations and operating points (chord Newton)
+  int ring_jacobian_mask_ = -1;    // which DOF it belongs to
 };
 
 /// Friction of the whole bearing at a solved load distribution (quasi-static, steady state).
