@@ -23,10 +23,12 @@ from kegel import _core
 
 OUT = Path(__file__).resolve().parent / "results"
 RPM = math.pi / 30
-LEVELS = [("independent", 10), ("independent", 30), ("alternative_slicing", 10), ("alternative_slicing", 20),
-          ("alternative_slicing", 30), ("alternative_slicing", 60), ("alternative_slicing", 100)]
-FINEST = ("alternative_slicing", 100)
-DEFAULT = ("alternative_slicing", 30)
+# (label, slice model, slices, rib cells; 0 = one closed-form ellipse)
+LEVELS = [("fast", "independent", 10, 0), ("", "independent", 30, 0), ("", "alternative_slicing", 10, 0),
+          ("", "alternative_slicing", 30, 0), ("default", "alternative_slicing", 30, 32),
+          ("", "alternative_slicing", 60, 32), ("fine", "alternative_slicing", 100, 64)]
+FINEST = ("fine", "alternative_slicing", 100, 64)
+DEFAULT = ("default", "alternative_slicing", 30, 32)
 
 
 def main() -> None:
@@ -37,39 +39,44 @@ def main() -> None:
     kw = dict(temperature_K=323.15, inner_speed_rad_s=2000 * RPM, axial_N=6000.0)
     rows = []
     torque = {}
-    for method, n in LEVELS:
+    for level in LEVELS:
+        label, method, n, cells = level
         cold, warm = [], []
-        repeats = 5 if n <= 30 else 3
+        repeats = 5 if n <= 30 and cells <= 32 else 3
         for _ in range(repeats):
             t0 = time.perf_counter()
             model = bearing_model(g, b, m, slices=n, method=method)
             data = _core.quasi_static.BearingData(model)
-            _, f = bearing_friction(g, b, m, lub, fr, model=model, data=data, **kw)
+            _, f = bearing_friction(g, b, m, lub, fr, model=model, data=data, rib_cells=cells, **kw)
             cold.append(time.perf_counter() - t0)
             t0 = time.perf_counter()
-            bearing_friction(g, b, m, lub, fr, model=model, data=data,
+            bearing_friction(g, b, m, lub, fr, model=model, data=data, rib_cells=cells,
                              **{**kw, "inner_speed_rad_s": 2050 * RPM})
             warm.append(time.perf_counter() - t0)
-        torque[(method, n)] = f.drive_torque_Nm
-        rows.append({"method": method, "slices": n, "cold_ms": 1e3 * statistics.median(cold),
+        torque[level] = f.drive_torque_Nm
+        rows.append({"level": label, "method": method, "slices": n, "rib_cells": cells,
+                     "cold_ms": 1e3 * statistics.median(cold),
                      "warm_ms": 1e3 * statistics.median(warm), "torque_Nm": f.drive_torque_Nm})
     ref = torque[FINEST]
     for r in rows:
         r["deviation_from_finest"] = r["torque_Nm"] / ref - 1
     # 50-point speed sweep at the default level (warm-started along the sweep)
-    model = bearing_model(g, b, m, slices=DEFAULT[1], method=DEFAULT[0])
+    model = bearing_model(g, b, m, slices=DEFAULT[2], method=DEFAULT[1])
     data = _core.quasi_static.BearingData(model)
     t0 = time.perf_counter()
     for k in range(50):
-        bearing_friction(g, b, m, lub, fr, model=model, data=data,
+        bearing_friction(g, b, m, lub, fr, model=model, data=data, rib_cells=DEFAULT[3],
                          **{**kw, "inner_speed_rad_s": (500 + 3500 * k / 49) * RPM})
     sweep_s = time.perf_counter() - t0
 
-    print("quasi-static solution, 32216, Fa = 6 kN, 2000 rpm, 50 degC (medians; finest = AST, 100 slices)")
-    print(f"{'slice model':22s} {'slices':>6s} {'cold [ms]':>10s} {'warm [ms]':>10s} {'torque [N m]':>13s} {'vs finest':>10s}")
+    print("quasi-static solution, 32216, Fa = 6 kN, 2000 rpm, 50 degC "
+          "(medians; finest = AST, 100 slices, rib cell model 64 x 64)")
+    print(f"{'level':8s} {'slice model':20s} {'slices':>6s} {'rib':>8s} {'cold [ms]':>10s} {'warm [ms]':>10s} "
+          f"{'torque [N m]':>13s} {'vs finest':>10s}")
     for r in rows:
-        print(f"{r['method']:22s} {r['slices']:6d} {r['cold_ms']:10.1f} {r['warm_ms']:10.1f} {r['torque_Nm']:13.5f} "
-              f"{100 * r['deviation_from_finest']:9.3f}%")
+        rib = f"{r['rib_cells']}x{r['rib_cells']}" if r["rib_cells"] else "ellipse"
+        print(f"{r['level']:8s} {r['method']:20s} {r['slices']:6d} {rib:>8s} {r['cold_ms']:10.1f} {r['warm_ms']:10.1f} "
+              f"{r['torque_Nm']:13.5f} {100 * r['deviation_from_finest']:9.3f}%")
     print(f"50-point speed sweep (500-4000 rpm) at the default level: {sweep_s:.2f} s "
           f"({1e3 * sweep_s / 50:.0f} ms per point); target per point: 20 ms")
     OUT.mkdir(exist_ok=True)
@@ -80,16 +87,15 @@ def main() -> None:
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
-    for method, marker in (("independent", "s"), ("alternative_slicing", "o")):
-        sel = [r for r in rows if r["method"] == method]
-        ax.loglog([r["warm_ms"] for r in sel], [max(abs(r["deviation_from_finest"]), 1e-6) for r in sel],
-                  marker=marker, label=method.replace("_", " "))
-        for r in sel:
-            ax.annotate(str(r["slices"]), (r["warm_ms"], max(abs(r["deviation_from_finest"]), 1e-6)), fontsize=7)
+    for r in rows:
+        x, y = r["warm_ms"], max(abs(r["deviation_from_finest"]), 1e-5)
+        ax.loglog([x], [y], marker="s" if r["method"] == "independent" else ("o" if not r["rib_cells"] else "^"),
+                  color="C0" if not r["rib_cells"] else "C1")
+        rib = f", rib {r['rib_cells']}" if r["rib_cells"] else ""
+        ax.annotate(f"{r['level'] or ''} {r['method'][:3]} {r['slices']}{rib}", (x, y), fontsize=7)
     ax.set_xlabel("runtime per operating point, warm [ms]")
     ax.set_ylabel("|torque / finest - 1|")
-    ax.set_title("quasi-static 32216: speed against error (labels: slices)", fontsize=9)
-    ax.legend()
+    ax.set_title("quasi-static 32216: speed against error (ind/alt slices, rib cells)", fontsize=9)
     fig.tight_layout()
     fig.savefig(OUT / "quasi_static.png", dpi=110)
     print(f"table and plot: {OUT / 'quasi_static.json'}, {OUT / 'quasi_static.png'}")

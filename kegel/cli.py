@@ -307,7 +307,8 @@ def _cmd_run(args: argparse.Namespace) -> int:
     print(f"  bearing {g.designation} (Z = {g.roller_count}, contact angle {math.degrees(g.cup_angle_rad):.2f} deg), "
           f"lubricant {scene.lubricant.name}, {scene.lubrication.mode}"
           + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
-    print(f"  fidelity {f.name}: quasi-static, {f.slices} slices (alternative slicing), rib closed-form Hertz, "
+    rib = f"rib cell model {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "rib closed-form Hertz"
+    print(f"  fidelity {f.name}: quasi-static, {f.slices} slices ({f.slice_model.replace('_', ' ')}), {rib}, "
           f"hydraulic {f.hydraulic}")
     rows = []
     for p in result.points:

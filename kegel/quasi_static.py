@@ -206,7 +206,7 @@ class BearingFrictionResult:
 def bearing_friction(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction,
                      *, temperature_K: float, inner_speed_rad_s: float, axial_N: float | None = None,
                      axial_offset_m: float | None = None, radial_N: float = 0.0, misalignment_rad: float = 0.0,
-                     slices: int = 30, method: str = "alternative_slicing",
+                     slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0,
                      model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None
                      ) -> tuple[LoadDistribution, BearingFrictionResult]:
     """Load distribution and friction of the whole bearing at one operating point.
@@ -217,6 +217,9 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         :class:`kegel.LubricantData` and :class:`kegel.FrictionData`.
     temperature_K, inner_speed_rad_s
         Oil temperature and inner-ring speed (outer ring fixed).
+    rib_cells
+        0: the rib as one closed-form elliptic contact; n > 0: its pressure field by the cell
+        model (n x n) with every cell's friction at its own sliding velocity.
     Other parameters as in :func:`load_distribution`; the centrifugal force uses the
     pure-rolling cage speed.
     """
@@ -238,7 +241,8 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         loads.axial_N = axial_N
     loads.radial_N = radial_N
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
-    f = Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant), race, rib)
+    f = Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant), race, rib,
+                                    rib_cells)
     res = BearingFrictionResult(
         drive_torque_Nm=f["drive_torque_Nm"],
         outer_ring_torque_Nm=f["outer_ring_torque_Nm"],

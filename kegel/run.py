@@ -76,7 +76,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
     fid = scene.fidelity
-    method = "alternative_slicing"
+    method = fid.slice_model
+    rib_cells = fid.rib_cells if fid.rib_model == "cell" else 0
     friction = load_friction()
     model = bearing_model(g, b, m, slices=fid.slices, method=method)
     data = _core.quasi_static.BearingData(model)
@@ -86,7 +87,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         dist, fr = bearing_friction(
             g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
             axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
-            misalignment_rad=op.misalignment_rad, model=model, data=data,
+            misalignment_rad=op.misalignment_rad, rib_cells=rib_cells, model=model, data=data,
         )
         state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
         hyd = None
@@ -137,8 +138,9 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "bearing": b.designation, "lubricant": scene.lubricant.name, "material": m.name,
             "friction_parameters": friction.name,
             "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
-            "fidelity": {**fid.as_dict(), "slice_method": method, "rib_model_used": "hertz",
-                         "solution_used": "quasi_static"},
+            "fidelity": {**fid.as_dict(), "solution_used": "quasi_static",
+                         "rib_load_model": "hertz (load distribution); friction: "
+                                           + (f"cell model {rib_cells} x {rib_cells}" if rib_cells else "one ellipse")},
             "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime, "points": points,
         })),
         "csv": str(atomic_write_text(out / "results.csv", _csv(points))),

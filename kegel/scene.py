@@ -33,8 +33,8 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
 
     [model]
     fidelity = "default"                     # fast | default | fine; the keys below override it
-    # slices = 30, rib_model = "cell", rib_cells = 32, cage = true,
-    # solution = "quasi_static", hydraulic = "correlation"
+    # slices = 30, slice_model = "alternative_slicing", rib_model = "cell", rib_cells = 32,
+    # cage = true, solution = "quasi_static", hydraulic = "correlation"
 
     [output]
     directory = "results/32216_table1"       # optional
@@ -85,7 +85,7 @@ _ALLOWED: dict[str, set[str]] = {
         "temperature",
     },
     "lubrication": {"mode", "oil_level"},
-    "model": {"fidelity", "slices", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
+    "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
     "output": {"directory"},
 }
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
@@ -104,6 +104,8 @@ class Fidelity:
         when a key overrides it.
     slices
         Slices per roller/raceway contact.
+    slice_model
+        ``"alternative_slicing"`` (slices coupled through the half-space) or ``"independent"``.
     rib_model
         ``"cell"`` (FFT + CG cell model) or ``"hertz"`` (closed-form elliptic contact).
     rib_cells
@@ -118,6 +120,7 @@ class Fidelity:
 
     name: str
     slices: int
+    slice_model: str
     rib_model: str
     rib_cells: int
     cage: bool
@@ -130,11 +133,15 @@ class Fidelity:
 
 
 FIDELITY_PRESETS: dict[str, dict[str, Any]] = {
-    "fast": dict(slices=10, rib_model="hertz", rib_cells=16, cage=False, solution="quasi_static"),
-    "default": dict(slices=30, rib_model="cell", rib_cells=32, cage=True, solution="quasi_static"),
-    "fine": dict(slices=100, rib_model="cell", rib_cells=64, cage=True, solution="quasi_static"),
+    "fast": dict(slices=10, slice_model="independent", rib_model="hertz", rib_cells=16, cage=False,
+                 solution="quasi_static"),
+    "default": dict(slices=30, slice_model="alternative_slicing", rib_model="cell", rib_cells=32, cage=True,
+                    solution="quasi_static"),
+    "fine": dict(slices=100, slice_model="alternative_slicing", rib_model="cell", rib_cells=64, cage=True,
+                 solution="quasi_static"),
 }
 _CHOICES = {
+    "slice_model": ("alternative_slicing", "independent"),
     "rib_model": ("cell", "hertz"),
     "solution": ("quasi_static", "dynamic"),
     "hydraulic": ("none", "correlation", "cfd"),

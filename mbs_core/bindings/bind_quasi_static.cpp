@@ -87,11 +87,11 @@ void bind_quasi_static(nb::module_& parent) {
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
          const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
-         const SurfacePair& rib) {
+         const SurfacePair& rib, int rib_cells) {
         BearingFriction f;
-        const int status = evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f);
+        const int status = evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f, rib_cells);
         if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
-                                                    "with a finite non-zero inner-ring speed");
+                                                    "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256");
         nb::dict d;
         d["status"] = status;
         d["inner_speed_rad_s"] = f.inner_speed_rad_s;
@@ -120,7 +120,8 @@ void bind_quasi_static(nb::module_& parent) {
         return d;
       },
       "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
-      "rib"_a, "Friction of the whole bearing at the solved load distribution.");
+      "rib"_a, "rib_cells"_a = 0,
+      "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model).");
 }
 
 }  // namespace kegel::python

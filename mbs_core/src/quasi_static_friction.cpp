@@ -3,6 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include <memory>
+
+#include "kegel/core/cell_contact.hpp"
 #include "kegel/core/contact_geometry.hpp"
 #include "kegel/core/hertz.hpp"
 #include "kegel/core/quasi_static.hpp"
@@ -16,7 +19,7 @@ struct Point {
   Eigen::Vector3d p, n, t_roll, t_line;  // contact point, normal (ring -> roller), tangents
   double load_N = 0.0, width_m = 0.0, R_m = 0.0;
   int contact = 0;                        // BearingFriction::Contact
-  double rib_Rx = 0.0, rib_Ry = 0.0, rib_area = 0.0;
+  double rib_Rx = 0.0, rib_Ry = 0.0, rib_area = 0.0, rib_contact_load = 0.0;
 };
 
 struct Roller {
@@ -49,6 +52,7 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
     if (c.contact == BearingFriction::kRib) {
       CellInput in;
       in.load_N = c.load_N;
+      in.contact_load_N = c.rib_contact_load;
       in.area_m2 = c.rib_area;
       in.Rx_m = c.rib_Rx;
       in.Ry_m = c.rib_Ry;
@@ -157,8 +161,12 @@ bool secant(F f, double x0, double x1, double tol, double& root) {
 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub, const FrictionParameters& fp,
-                              const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out) noexcept {
-  if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0) return -1;
+                              const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
+                              int rib_cells) noexcept {
+  if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
+  std::unique_ptr<CellContactModel> cell_model;
+  std::unique_ptr<CellContactData> cell_data;
+  std::vector<double> rib_h0;
   const auto& v = m.values();
   const int Z = v.roller_count, n = v.slices;
   const double w = m.outer_line().width_m();
@@ -214,18 +222,59 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     const double gmin = rib_gap(end, rib, 1, 1, 1e-6, 1e-6, &h0, pc, nc);
     if (gmin < 0.0) {
       const HertzEllipse hz = hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -gmin);
-      Point c;
-      c.p = Rr * pc + dr;
-      c.n = Rr * nc;
-      const Eigen::Vector3d er_c = Eigen::Vector3d(c.p.x(), c.p.y(), 0.0).normalized();
-      c.t_roll = Eigen::Vector3d::UnitZ().cross(er_c);  // circumferential
-      c.t_line = c.n.cross(c.t_roll).normalized();      // along the rib generator
-      c.load_N = hz.load_N;
-      c.contact = BearingFriction::kRib;
-      c.rib_Rx = m.rib_Rx_m();
-      c.rib_Ry = m.rib_Ry_m();
-      c.rib_area = kPi * hz.semi_major_m * hz.semi_minor_m;
-      r.points.push_back(c);
+      const Eigen::Vector3d p_glob = Rr * pc + dr;
+      const Eigen::Vector3d er_c = Eigen::Vector3d(p_glob.x(), p_glob.y(), 0.0).normalized();
+      const Eigen::Vector3d t_circ = Eigen::Vector3d::UnitZ().cross(er_c);  // circumferential
+      if (rib_cells == 0) {
+        Point c;
+        c.p = p_glob;
+        c.n = Rr * nc;
+        c.t_roll = t_circ;
+        c.t_line = c.n.cross(c.t_roll).normalized();  // along the rib generator
+        c.load_N = hz.load_N;
+        c.contact = BearingFriction::kRib;
+        c.rib_Rx = m.rib_Rx_m();
+        c.rib_Ry = m.rib_Ry_m();
+        c.rib_area = kPi * hz.semi_major_m * hz.semi_minor_m;
+        r.points.push_back(c);
+      } else {
+        // cell model: grid x along the rib generator (the smaller radius, semi-minor axis),
+        // y circumferential (semi-major); window of 3 semi-axes each way
+        const bool x_minor = m.rib_Rx_m() <= m.rib_Ry_m();
+        const double sx = x_minor ? hz.semi_minor_m : hz.semi_major_m;
+        const double sy = x_minor ? hz.semi_major_m : hz.semi_minor_m;
+        const double dx = 6.0 * sx / rib_cells, dy = 6.0 * sy / rib_cells;
+        cell_model = std::make_unique<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
+        cell_data = std::make_unique<CellContactData>(*cell_model);
+        rib_h0.assign(size_t(rib_cells) * rib_cells, 0.0);
+        Eigen::Vector3d pc2, nc2;
+        rib_gap(end, rib, rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
+        if (solve_cell_contact(*cell_model, *cell_data, rib_h0.data(), hz.load_N) < 0) return -1;
+        // tangent basis of the grid (as in rib_gap), in the ring frame
+        const Eigen::Vector3d er_r = Eigen::Vector3d(pc.x(), pc.y(), 0.0).normalized();
+        const Eigen::Vector3d t1 = std::cos(v.rib_half_angle_rad) * Eigen::Vector3d::UnitZ() +
+                                   std::sin(v.rib_half_angle_rad) * er_r;
+        const Eigen::Vector3d t2(-er_r.y(), er_r.x(), 0.0);
+        for (int ix = 0; ix < rib_cells; ++ix) {
+          for (int iy = 0; iy < rib_cells; ++iy) {
+            const double pr = cell_data->pressure_Pa[ix * rib_cells + iy];
+            if (!(pr > 0.0)) continue;
+            Point c;
+            const Eigen::Vector3d q = pc + ((ix + 0.5 - 0.5 * rib_cells) * dx) * t1 + ((iy + 0.5 - 0.5 * rib_cells) * dy) * t2;
+            c.p = Rr * q + dr;
+            c.n = Rr * nc;
+            c.t_roll = Rr * t2;
+            c.t_line = Rr * t1;
+            c.load_N = pr * dx * dy;
+            c.contact = BearingFriction::kRib;
+            c.rib_Rx = m.rib_Rx_m();
+            c.rib_Ry = m.rib_Ry_m();
+            c.rib_area = dx * dy;
+            c.rib_contact_load = hz.load_N;
+            r.points.push_back(c);
+          }
+        }
+      }
     }
   }
 

@@ -187,8 +187,9 @@ void evaluate_cell(const CellInput& in, const SurfacePair& sp, const ContactLubr
   const double uav = 0.5 * std::hypot(in.u1_x_m_s + in.u2_x_m_s, in.u1_y_m_s + in.u2_y_m_s);
   out.sliding_speed_m_s = us;
   out.entrainment_speed_m_s = uav;
-  if (uav > 0.0) {  // Eq. 31-35 with the cell's load (the paper's h_{0,i,j})
-    out.film_isothermal_m = tribology::elliptic_film_thickness_m(lub.eta0_Pas, uav, in.Rx_m, in.Ry_m, Q,
+  if (uav > 0.0) {  // Eq. 31-35 with the cell's velocity and the contact's load
+    const double W_load = in.contact_load_N > 0.0 ? in.contact_load_N : Q;
+    out.film_isothermal_m = tribology::elliptic_film_thickness_m(lub.eta0_Pas, uav, in.Rx_m, in.Ry_m, W_load,
                                                                  lub.alpha_p_1_Pa, E);
     out.thermal_factor = tribology::zhu_cheng_factor(out.max_pressure_Pa, E, us, 2.0 * uav, lub.deta_dtheta_Pas_K,
                                                      uav, lub.thermal_conductivity_W_mK);

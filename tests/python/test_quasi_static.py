@@ -138,3 +138,21 @@ def test_mixed_friction_raises_solid_shares(b32216, oil):
     assert hot.phi_max["inner_raceway"] > 0.01
     by_mech = hot.torque_by_mechanism_Nm(500 * RPM)
     assert by_mech["solid_rolling"] > 0
+
+
+def test_rib_cell_model_friction_converges_and_balances(b32216, oil):
+    g, b, m = b32216
+    lub, fr = oil
+    w = 2000 * RPM
+    rib = {}
+    for cells in (16, 32, 64):
+        _, f = bearing_friction(g, b, m, lub, fr, temperature_K=323.15, inner_speed_rad_s=w, axial_N=6000.0,
+                                method="independent", slices=15, rib_cells=cells)
+        assert abs(f.power_balance_error) < 5e-3
+        rib[cells] = f.torque_by_contact_Nm(w)["rib"]
+    assert abs(rib[32] / rib[64] - 1) < 0.01
+    assert abs(rib[32] / rib[64] - 1) < abs(rib[16] / rib[64] - 1)
+    _, one = bearing_friction(g, b, m, lub, fr, temperature_K=323.15, inner_speed_rad_s=w, axial_N=6000.0,
+                              method="independent", slices=15)
+    # the single ellipse misses the drilling: the cell model's rib friction is higher
+    assert one.torque_by_contact_Nm(w)["rib"] < rib[64]

@@ -118,7 +118,7 @@ class BearingData {
   friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
                                        const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
-                                       const SurfacePair&, BearingFriction&) noexcept;
+                                       const SurfacePair&, BearingFriction&, int) noexcept;
   std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
   double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
   std::vector<SliceGeometry> geo_;
@@ -157,10 +157,13 @@ struct BearingFriction {
 
 /// Evaluate the friction at the load distribution in data (solve_load_distribution first).
 /// @return 0 on success, 1 if the cage or a roller balance did not converge, -1 bad input.
+/// rib_cells = 0 evaluates the rib as one elliptic contact; rib_cells = n > 0 solves its pressure
+/// field with the cell model (n x n cells over 3 Hertz semi-axes each way, FFT + CG) for the
+/// rib load and evaluates every loaded cell with its own velocities (the drilling friction).
 int evaluate_bearing_friction(const BearingModel& model, BearingData& data, const BearingLoads& loads,
                               double inner_speed_rad_s, const ContactLubricantState& lubricant,
                               const FrictionParameters& friction, const SurfacePair& raceway,
-                              const SurfacePair& rib, BearingFriction& out) noexcept;
+                              const SurfacePair& rib, BearingFriction& out, int rib_cells = 0) noexcept;
 
 /// Solve the load distribution. @return 0 on convergence (ring residual below 1e-10 of the load
 /// scale), 1 if not converged, -1 for invalid loads.

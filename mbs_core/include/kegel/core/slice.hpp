@@ -131,6 +131,7 @@ struct SliceResult {
 /// the contact (Rx along the entrainment direction) for the elliptic film of Eq. 31-35.
 struct CellInput {
   double load_N = 0.0;        ///< p * cell area
+  double contact_load_N = 0.0;  ///< load of the whole rib contact (for W in Eq. 35); 0: load_N
   double area_m2 = 0.0;       ///< cell area
   double Rx_m = 0.0;          ///< reduced radius along the entrainment direction
   double Ry_m = 0.0;          ///< reduced radius across it
@@ -138,8 +139,10 @@ struct CellInput {
   double u2_x_m_s = 0.0, u2_y_m_s = 0.0;  ///< rib surface velocity
 };
 
-/// Evaluate one cell of the roller end / rib contact: elliptic film (Eq. 31-35, per cell as the
-/// paper's h_{0,i,j}) with the Zhu-Cheng factor, Lambda with the rib roughness, and the mixed
+/// Evaluate one cell of the roller end / rib contact: elliptic film (Eq. 31-35) with the cell's
+/// entrainment velocity but the load parameter W of the whole contact (the paper's W_{i,j} with
+/// the cell's load makes h grow as cells shrink, h ~ n^0.134 for n x n cells, so the friction
+/// would depend on the grid), the Zhu-Cheng factor, Lambda with the rib roughness, and the mixed
 /// sliding friction (Eq. 4-10, 21-28, 36) at the cell's pressure. The rib contact is a sliding
 /// ("drilling") contact: no rolling resistance, hysteresis or damping terms are evaluated.
 void evaluate_cell(const CellInput& in, const SurfacePair& surfaces, const ContactLubricantState& lub,
