@@ -206,10 +206,18 @@ Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d,
                                           const BearingLoads& L, double scale) {
   const Pose ring = ring_pose(x);
   Eigen::Vector3d F(L.radial_N, 0.0, L.axial_offset_controlled ? 0.0 : -L.axial_N), M(0.0, L.tilt_moment_Nm, 0.0);
-  for (int j = 0; j < m.values().roller_count; ++j) {
-    const RollerEval r = solve_roller(m, d, geo, e, j, ring, L.cage_speed_rad_s, scale);
-    F += r.F_ring;
-    M += r.M_ring;
+  const int Z = m.values().roller_count;
+  if (d.symmetric) {
+    // every roller as roller 0, rotated: the radial forces and the moments cancel
+    const RollerEval r = solve_roller(m, d, geo, e, 0, ring, L.cage_speed_rad_s, scale);
+    F[2] += Z * r.F_ring[2];
+    for (int j = 1; j < Z; ++j) d.rollers[j] = d.rollers[0];
+  } else {
+    for (int j = 0; j < Z; ++j) {
+      const RollerEval r = solve_roller(m, d, geo, e, j, ring, L.cage_speed_rad_s, scale);
+      F += r.F_ring;
+      M += r.M_ring;
+    }
   }
   const double Lr = m.values().pitch_radius_m;
   Eigen::Matrix<double, 5, 1> res;
@@ -262,11 +270,15 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     return -1;
   const auto& v = m.values();
   if (L.axial_offset_controlled && !(std::isfinite(L.axial_offset_m) && L.axial_offset_m > 0.0)) return -1;
-  // unknowns: dx, dy, dz, rx, ry; the axial offset and an imposed tilt remove their DOF
+  // unknowns: dx, dy, dz, rx, ry; the axial offset and an imposed tilt remove their DOF, and an
+  // axisymmetric load keeps the ring centred
+  d.symmetric = L.radial_N == 0.0 && !L.tilt_free && L.tilt_moment_Nm == 0.0 && L.misalignment_x_rad == 0.0 &&
+                 L.misalignment_y_rad == 0.0;
   int idx[5], ndof = 0;
   for (int k = 0; k < 5; ++k) {
     if (k == 2 && L.axial_offset_controlled) continue;
     if (k >= 3 && !L.tilt_free) continue;
+    if (k < 2 && d.symmetric) continue;
     idx[ndof++] = k;
   }
   const double l = v.roller_length_m;
@@ -294,6 +306,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
   auto residual = [&](const Eigen::Matrix<double, 5, 1>& xx, Eigen::Matrix<double, 5, 1>& out) {
     out = ring_residual(m, d, d.geo_, d.e_, xx, L, scale);
   };
+  if (d.symmetric) x[0] = x[1] = 0.0;
   Eigen::Matrix<double, 5, 1> full;
   residual(x, full);
   auto active = [&](const Eigen::Matrix<double, 5, 1>& f) {
@@ -307,7 +320,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
   const Eigen::Matrix<double, 5, 1> h = (Eigen::Matrix<double, 5, 1>() << 1e-9, 1e-9, 1e-9, 1e-8, 1e-8).finished();
   for (int it = 0; it < 100; ++it) {
     ++d.iterations;
-    if (active(full).cwiseAbs().maxCoeff() <= 1e-10 * scale) {
+    if (ndof == 0 || active(full).cwiseAbs().maxCoeff() <= 1e-10 * scale) {
       status = 0;
       break;
     }
@@ -366,7 +379,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     full = fn;
   }
   d.ring = x;
-  d.residual = active(full).cwiseAbs().maxCoeff() / scale;
+  d.residual = ndof ? active(full).cwiseAbs().maxCoeff() / scale : 0.0;
   // the moment of the rollers on the ring (about x and y), scaled back from the residual form
   const double Lr = v.pitch_radius_m;
   d.reaction_moment_Nm = Eigen::Vector2d(full[3] * Lr, full[4] * Lr - L.tilt_moment_Nm);

@@ -179,8 +179,10 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   for (int i = 0; i < n; ++i) xi[i] = m.outer_line().position_m(i);
   std::vector<SliceGeometry> geo(n);
   std::vector<Roller> rollers(Z);
-  // contact points at the load distribution
-  for (int j = 0; j < Z; ++j) {
+  // contact points at the load distribution (an axisymmetric case needs roller 0 only)
+  const int Zc = d.symmetric ? 1 : Z;
+  const double weight = d.symmetric ? double(Z) : 1.0;
+  for (int j = 0; j < Zc; ++j) {
     Roller& r = rollers[j];
     const double psi = 2.0 * kPi * j / Z;
     const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0);
@@ -299,7 +301,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   int status = 0;
   auto spin_for_cage = [&](double w_c, std::vector<double>& spins) {
     double tangential = 0.0;
-    for (int j = 0; j < Z; ++j) {
+    for (int j = 0; j < Zc; ++j) {
       const Roller& r = rollers[j];
       const double w_pure = wR0 * w_c / wc0;
       if (r.points.empty()) {
@@ -323,8 +325,9 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
       }
       spins[j] = root;
-      tangential += eval(r, root, w_c, w_i, lub, fp, race, ribp, false).axis_moment;
+      tangential += weight * eval(r, root, w_c, w_i, lub, fp, race, ribp, false).axis_moment;
     }
+    for (int j = Zc; j < Z; ++j) spins[j] = spins[0];
     return tangential;
   };
   std::vector<double> spins(Z);
@@ -357,12 +360,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     out.Lambda_min[k] = 1e300;
     out.phi_max[k] = 0.0;
   }
-  for (int j = 0; j < Z; ++j) {
+  for (int j = 0; j < Zc; ++j) {
     const Eval ev = eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, true);
-    t_in += ev.torque_inner;
-    t_out += ev.torque_outer;
+    t_in += weight * ev.torque_inner;
+    t_out += weight * ev.torque_outer;
     for (int k = 0; k < 3; ++k) {
-      for (int q = 0; q < 5; ++q) out.power_W[k][q] += ev.P[k][q];
+      for (int q = 0; q < 5; ++q) out.power_W[k][q] += weight * ev.P[k][q];
       out.Lambda_min[k] = std::min(out.Lambda_min[k], ev.Lmin[k]);
       out.phi_max[k] = std::max(out.phi_max[k], ev.phimax[k]);
     }

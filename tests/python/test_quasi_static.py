@@ -156,3 +156,16 @@ def test_rib_cell_model_friction_converges_and_balances(b32216, oil):
                               method="independent", slices=15)
     # the single ellipse misses the drilling: the cell model's rib friction is higher
     assert one.torque_by_contact_Nm(w)["rib"] < rib[64]
+
+
+def test_general_path_reproduces_the_axisymmetric_shortcut(b32216):
+    # pure axial load through the general solver (free tilt: every roller solved on its own)
+    g, b, m = b32216
+    sym = load_distribution(g, b, m, axial_N=6000.0, method="independent")
+    gen = load_distribution(g, b, m, axial_N=6000.0, method="independent", tilt_free=True)
+    assert gen.residual < 1e-8
+    assert gen.inner_N.max() - gen.inner_N.min() < 1e-6 * gen.inner_N.max()
+    assert np.allclose(gen.inner_N, sym.inner_N, rtol=1e-6)
+    assert np.allclose(gen.rib_N, sym.rib_N, rtol=1e-6)
+    assert abs(gen.ring_tilt_rad).max() < 1e-9
+    assert (gen.outer_N * math.sin(g.cup_angle_rad)).sum() == pytest.approx(6000.0, rel=1e-6)

@@ -111,6 +111,7 @@ class BearingData {
   double residual = 0.0;   ///< ring equilibrium residual relative to the load scale
   Eigen::Vector2d reaction_moment_Nm = Eigen::Vector2d::Zero();  ///< rollers on the ring about (0,0,z_M), x and y
   double axial_force_N = 0.0;  ///< axial force the rollers carry (= axial_N in force control)
+  bool symmetric = false;      ///< axisymmetric load case: solved for roller 0 and replicated
   int iterations = 0;
   bool has_solution = false;
 
@@ -165,7 +166,9 @@ int evaluate_bearing_friction(const BearingModel& model, BearingData& data, cons
                               const FrictionParameters& friction, const SurfacePair& raceway,
                               const SurfacePair& rib, BearingFriction& out, int rib_cells = 0) noexcept;
 
-/// Solve the load distribution. @return 0 on convergence (ring residual below 1e-10 of the load
+/// Solve the load distribution. An axisymmetric load case (no radial load, no tilt moment, no
+/// misalignment, tilt imposed) is solved for one roller and replicated: every roller then
+/// carries the same loads by symmetry. @return 0 on convergence (ring residual below 1e-10 of the load
 /// scale), 1 if not converged, -1 for invalid loads.
 int solve_load_distribution(const BearingModel& model, BearingData& data, const BearingLoads& loads) noexcept;
 
