@@ -175,6 +175,7 @@ class BearingFrictionResult:
     roller_spin_rad_s: np.ndarray
     roller_spin_pure_rolling_rad_s: np.ndarray
     power_W: dict
+    cage_power_W: float
     Lambda_min: dict
     phi_max: dict
     converged: bool
@@ -191,8 +192,11 @@ class BearingFrictionResult:
         return self.power_dissipated_W / self.power_input_W - 1.0
 
     def torque_by_contact_Nm(self, inner_speed_rad_s: float) -> dict[str, float]:
-        """Share of the friction torque of each contact (its power / inner-ring speed)."""
-        return {k: sum(v.values()) / inner_speed_rad_s for k, v in self.power_W.items()}
+        """Share of the friction torque of each contact (its power / inner-ring speed); ``cage``:
+        the cage pockets."""
+        out = {k: sum(v.values()) / inner_speed_rad_s for k, v in self.power_W.items()}
+        out["cage"] = self.cage_power_W / inner_speed_rad_s
+        return out
 
     def torque_by_mechanism_Nm(self, inner_speed_rad_s: float) -> dict[str, float]:
         """Share of the friction torque of each mechanism, summed over the contacts."""
@@ -200,13 +204,14 @@ class BearingFrictionResult:
         for row in self.power_W.values():
             for k, v in row.items():
                 out[k] = out.get(k, 0.0) + v / inner_speed_rad_s
+        out["solid_sliding"] += self.cage_power_W / inner_speed_rad_s  # Coulomb friction in the pockets
         return out
 
 
 def bearing_friction(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction,
                      *, temperature_K: float, inner_speed_rad_s: float, axial_N: float | None = None,
                      axial_offset_m: float | None = None, radial_N: float = 0.0, misalignment_rad: float = 0.0,
-                     slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0,
+                     slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0, cage: bool = True,
                      model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None
                      ) -> tuple[LoadDistribution, BearingFrictionResult]:
     """Load distribution and friction of the whole bearing at one operating point.
@@ -220,6 +225,8 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     rib_cells
         0: the rib as one closed-form elliptic contact; n > 0: its pressure field by the cell
         model (n x n) with every cell's friction at its own sliding velocity.
+    cage
+        Include the friction of the cage pockets (Eq. 37).
     Other parameters as in :func:`load_distribution`; the centrifugal force uses the
     pure-rolling cage speed.
     """
@@ -242,7 +249,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     loads.radial_N = radial_N
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
     f = Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant), race, rib,
-                                    rib_cells)
+                                    rib_cells, cage)
     res = BearingFrictionResult(
         drive_torque_Nm=f["drive_torque_Nm"],
         outer_ring_torque_Nm=f["outer_ring_torque_Nm"],
@@ -253,6 +260,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         roller_spin_rad_s=np.asarray(f["roller_spin_rad_s"]),
         roller_spin_pure_rolling_rad_s=np.asarray(f["roller_spin_pure_rolling_rad_s"]),
         power_W={k: dict(v) for k, v in f["power_W"].items()},
+        cage_power_W=f["cage_power_W"],
         Lambda_min=dict(f["Lambda_min"]),
         phi_max=dict(f["phi_max"]),
         converged=f["status"] == 0,

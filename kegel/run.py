@@ -34,6 +34,7 @@ from . import _core
 __all__ = ["RunResult", "run_scene"]
 
 CONTACTS = ("outer_raceway", "inner_raceway", "rib")
+CONTACTS_WITH_CAGE = CONTACTS + ("cage",)
 MECHANISMS = ("ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis")
 
 
@@ -87,7 +88,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         dist, fr = bearing_friction(
             g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
             axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
-            misalignment_rad=op.misalignment_rad, rib_cells=rib_cells, model=model, data=data,
+            misalignment_rad=op.misalignment_rad, rib_cells=rib_cells, cage=fid.cage, model=model, data=data,
         )
         state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
         hyd = None
@@ -153,13 +154,13 @@ def _csv(points: list[dict[str, Any]]) -> str:
     cols = ["index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
             "axial_force_N", "friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm", "cage_speed_rpm",
             "cage_slip", "power_input_W", "power_balance_error"]
-    cols += [f"torque_{c}_Nm" for c in CONTACTS] + [f"torque_{k}_Nm" for k in MECHANISMS]
+    cols += [f"torque_{c}_Nm" for c in CONTACTS_WITH_CAGE] + [f"torque_{k}_Nm" for k in MECHANISMS]
     buf = io.StringIO()
     w = csv.writer(buf)
     w.writerow(cols)
     for p in points:
         row = [p.get(c) for c in cols[:14]]
-        row += [p["torque_by_contact_Nm"][c] for c in CONTACTS]
+        row += [p["torque_by_contact_Nm"][c] for c in CONTACTS_WITH_CAGE]
         row += [p["torque_by_mechanism_Nm"][k] for k in MECHANISMS]
         w.writerow(["" if v is None else v for v in row])
     return buf.getvalue()
@@ -224,6 +225,11 @@ def _plots(scene: Scene, points: list[dict[str, Any]], out: Path) -> dict[str, s
             ax.bar(x, vals, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
                    label=f"{c.replace('_', ' ')}: {k.replace('_', ' ')}")
             bottom += vals
+    cage = np.array([p["torque_by_contact_Nm"]["cage"] for p in ps])
+    if cage.any():
+        ax.bar(x, cage, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
+               label="cage pockets: solid sliding (Eq. 37)")
+        bottom += cage
     hyd = np.array([p["hydraulic_torque_Nm"] for p in ps])
     if hyd.any():
         ax.bar(x, hyd, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),

@@ -87,9 +87,10 @@ void bind_quasi_static(nb::module_& parent) {
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
          const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
-         const SurfacePair& rib, int rib_cells) {
+         const SurfacePair& rib, int rib_cells, bool cage) {
         BearingFriction f;
-        const int status = evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f, rib_cells);
+        const int status =
+            evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f, rib_cells, cage);
         if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
                                                     "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256");
         nb::dict d;
@@ -103,6 +104,7 @@ void bind_quasi_static(nb::module_& parent) {
         d["outer_ring_torque_Nm"] = f.outer_ring_torque_Nm;
         d["power_input_W"] = f.power_input_W;
         d["power_dissipated_W"] = f.power_dissipated_W;
+        d["cage_power_W"] = f.cage_power_W;
         d["cage_residual_Nm"] = f.cage_residual_Nm;
         const char* contacts[3] = {"outer_raceway", "inner_raceway", "rib"};
         const char* mechs[5] = {"ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis"};
@@ -120,7 +122,7 @@ void bind_quasi_static(nb::module_& parent) {
         return d;
       },
       "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
-      "rib"_a, "rib_cells"_a = 0,
+      "rib"_a, "rib_cells"_a = 0, "cage"_a = true,
       "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model).");
 }
 

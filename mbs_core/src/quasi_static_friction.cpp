@@ -24,6 +24,7 @@ struct Point {
 
 struct Roller {
   Eigen::Vector3d M, a, et;
+  double radius = 0.0;  // roller mid radius, where it touches the pocket walls
   std::vector<Point> points;
 };
 
@@ -34,14 +35,18 @@ struct Roller {
 struct Eval {
   double spin_moment = 0.0;
   double axis_moment = 0.0;  // moment of the contact loads on the roller about the bearing axis
+  double pocket_N = 0.0;     // normal force of the cage pocket (the roller's circumferential load)
+  double pocket_W = 0.0;     // friction power in the pocket (Eq. 37)
   double torque_inner = 0.0, torque_outer = 0.0;  // moments about z of the forces on the rings
   double P[3][5] = {};
   double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
 };
 
 Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubricantState& lub,
-          const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& rib, bool accumulate) {
+          const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& rib, bool accumulate,
+          bool cage) {
   Eval e;
+  double tangential = 0.0;  // circumferential load of the contacts on the roller
   const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
   for (const Point& c : r.points) {
     // surface velocities relative to the cage (where the contact is) and sliding
@@ -89,6 +94,7 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
     const Eigen::Vector3d m_roller = (c.p - r.M).cross(f) + (p_n - r.M).cross(fn);
     e.spin_moment += m_roller.dot(r.a);
     e.axis_moment += (c.p.cross(f) + p_n.cross(fn)).dot(ez);
+    tangential += (f + fn).dot(r.et);
     if (accumulate) {
       // forces on the ring: -(sliding), its own rolling resistance, -(normal) at the shifted point
       const double tz = c.p.cross(-f).dot(ez) + p_n.cross(-fn).dot(ez);
@@ -107,6 +113,16 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
         e.phimax[k] = std::max(e.phimax[k], s.phi);
       }
     }
+  }
+  if (cage) {
+    // the pocket wall takes the roller's circumferential load; its Coulomb friction (Eq. 37, the
+    // same regularised mu(v)) acts where the roller surface slides on the wall at w_R * radius
+    // and brakes the roller's spin
+    e.pocket_N = std::abs(tangential);
+    const double v = std::abs(w_R) * r.radius;
+    const double mu = tribology::cubic_friction_coefficient(fp.cubic_law(), v);
+    e.spin_moment -= (w_R >= 0 ? 1.0 : -1.0) * mu * e.pocket_N * r.radius;
+    e.pocket_W = mu * e.pocket_N * v;
   }
   return e;
 }
@@ -162,7 +178,7 @@ bool secant(F f, double x0, double x1, double tol, double& root) {
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub, const FrictionParameters& fp,
                               const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
-                              int rib_cells) noexcept {
+                              int rib_cells, bool cage) noexcept {
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
   std::unique_ptr<CellContactModel> cell_model;
   std::unique_ptr<CellContactData> cell_data;
@@ -187,6 +203,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     const double psi = 2.0 * kPi * j / Z;
     const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0);
     r.et = Eigen::Vector3d(-std::sin(psi), std::cos(psi), 0.0);
+    r.radius = v.roller_mean_radius_m;
     const auto& st = d.rollers[j];
     r.M = (v.pitch_radius_m + st.u_m) * er + (v.roller_mid_z_m + st.w_m) * Eigen::Vector3d::UnitZ();
     r.a = Eigen::AngleAxisd(st.tilt_rad, r.et) *
@@ -308,7 +325,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         spins[j] = w_pure;
         continue;
       }
-      auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false).spin_moment; };
+      auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, cage).spin_moment; };
       const double tol = 1e-13 * std::abs(w_pure);
       double root = w_pure;
       // warm start from the previous slip of this roller, secant first, Brent as the fallback
@@ -325,7 +342,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
       }
       spins[j] = root;
-      tangential += weight * eval(r, root, w_c, w_i, lub, fp, race, ribp, false).axis_moment;
+      tangential += weight * eval(r, root, w_c, w_i, lub, fp, race, ribp, false, cage).axis_moment;
     }
     for (int j = Zc; j < Z; ++j) spins[j] = spins[0];
     return tangential;
@@ -355,13 +372,15 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
 
   // torques and powers at the solution
   double t_in = 0.0, t_out = 0.0;
+  out.cage_power_W = 0.0;
   for (int k = 0; k < 3; ++k) {
     for (int q = 0; q < 5; ++q) out.power_W[k][q] = 0.0;
     out.Lambda_min[k] = 1e300;
     out.phi_max[k] = 0.0;
   }
   for (int j = 0; j < Zc; ++j) {
-    const Eval ev = eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, true);
+    const Eval ev = eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, true, cage);
+    out.cage_power_W += weight * ev.pocket_W;
     t_in += weight * ev.torque_inner;
     t_out += weight * ev.torque_outer;
     for (int k = 0; k < 3; ++k) {
@@ -378,7 +397,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   double P = 0.0;
   for (int k = 0; k < 3; ++k)
     for (int q = 0; q < 5; ++q) P += out.power_W[k][q];
-  out.power_dissipated_W = P;
+  out.power_dissipated_W = P + out.cage_power_W;
   (void)L;
   return status;
 }

@@ -169,3 +169,16 @@ def test_general_path_reproduces_the_axisymmetric_shortcut(b32216):
     assert np.allclose(gen.rib_N, sym.rib_N, rtol=1e-6)
     assert abs(gen.ring_tilt_rad).max() < 1e-9
     assert (gen.outer_N * math.sin(g.cup_angle_rad)).sum() == pytest.approx(6000.0, rel=1e-6)
+
+
+def test_cage_pocket_friction_adds_power_and_keeps_the_balance(b32216, oil):
+    g, b, m = b32216
+    lub, fr = oil
+    kw = dict(temperature_K=323.15, inner_speed_rad_s=2000 * RPM, axial_N=6000.0, radial_N=6500.0,
+              method="independent", slices=15)
+    _, off = bearing_friction(g, b, m, lub, fr, cage=False, **kw)
+    _, on = bearing_friction(g, b, m, lub, fr, cage=True, **kw)
+    assert off.cage_power_W == 0.0 and on.cage_power_W > 0.0
+    assert abs(on.power_balance_error) < 5e-3
+    assert on.drive_torque_Nm > off.drive_torque_Nm
+    assert on.torque_by_contact_Nm(2000 * RPM)["cage"] == pytest.approx(on.cage_power_W / (2000 * RPM))

@@ -119,7 +119,7 @@ class BearingData {
   friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
                                        const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
-                                       const SurfacePair&, BearingFriction&, int) noexcept;
+                                       const SurfacePair&, BearingFriction&, int, bool) noexcept;
   std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
   double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
   std::vector<SliceGeometry> geo_;
@@ -151,6 +151,7 @@ struct BearingFriction {
   double power_input_W = 0.0;         ///< drive torque x inner-ring speed
   double power_dissipated_W = 0.0;    ///< sum of the mechanism powers
   double power_W[3][5] = {};          ///< by contact and mechanism
+  double cage_power_W = 0.0;          ///< friction in the cage pockets (Eq. 37)
   double Lambda_min[3] = {0, 0, 0};
   double phi_max[3] = {0, 0, 0};
   double cage_residual_Nm = 0.0;      ///< net moment of the rollers on the cage about the axis
@@ -158,13 +159,16 @@ struct BearingFriction {
 
 /// Evaluate the friction at the load distribution in data (solve_load_distribution first).
 /// @return 0 on success, 1 if the cage or a roller balance did not converge, -1 bad input.
+/// cage = true adds the friction of the cage pockets (Eq. 37): each pocket takes its roller's
+/// circumferential load, and that normal force's Coulomb friction brakes the roller's spin.
 /// rib_cells = 0 evaluates the rib as one elliptic contact; rib_cells = n > 0 solves its pressure
 /// field with the cell model (n x n cells over 3 Hertz semi-axes each way, FFT + CG) for the
 /// rib load and evaluates every loaded cell with its own velocities (the drilling friction).
 int evaluate_bearing_friction(const BearingModel& model, BearingData& data, const BearingLoads& loads,
                               double inner_speed_rad_s, const ContactLubricantState& lubricant,
                               const FrictionParameters& friction, const SurfacePair& raceway,
-                              const SurfacePair& rib, BearingFriction& out, int rib_cells = 0) noexcept;
+                              const SurfacePair& rib, BearingFriction& out, int rib_cells = 0,
+                              bool cage = true) noexcept;
 
 /// Solve the load distribution. An axisymmetric load case (no radial load, no tilt moment, no
 /// misalignment, tilt imposed) is solved for one roller and replicated: every roller then
