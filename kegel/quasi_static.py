@@ -87,6 +87,20 @@ class LoadDistribution:
         return self.inner_N > 1e-6 * max(self.inner_N.max(), 1e-300)
 
 
+def _loads(axial_N: float | None, axial_offset_m: float | None, radial_N: float, tilt_moment_Nm: float,
+           misalignment_rad: float) -> "Q.BearingLoads":
+    loads = Q.BearingLoads()
+    if axial_offset_m is not None:
+        loads.axial_offset_controlled = True
+        loads.axial_offset_m = axial_offset_m
+    else:
+        loads.axial_N = axial_N
+    loads.radial_N = radial_N
+    loads.tilt_moment_Nm = tilt_moment_Nm
+    loads.misalignment_y_rad = misalignment_rad
+    return loads
+
+
 def load_distribution(g: BearingGeometry, bearing: BearingData, material: MaterialData, *,
                       axial_N: float | None = None, axial_offset_m: float | None = None, radial_N: float = 0.0, tilt_moment_Nm: float = 0.0, misalignment_rad: float = 0.0,
                       tilt_free: bool = False, cage_speed_rad_s: float = 0.0,
@@ -119,15 +133,7 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
     t0 = time.perf_counter()
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     data = data or Q.BearingData(model)
-    loads = Q.BearingLoads()
-    if axial_offset_m is not None:
-        loads.axial_offset_controlled = True
-        loads.axial_offset_m = axial_offset_m
-    else:
-        loads.axial_N = axial_N
-    loads.radial_N = radial_N
-    loads.tilt_moment_Nm = tilt_moment_Nm
-    loads.misalignment_y_rad = misalignment_rad
+    loads = _loads(axial_N, axial_offset_m, radial_N, tilt_moment_Nm, misalignment_rad)
     loads.tilt_free = tilt_free
     loads.cage_speed_rad_s = cage_speed_rad_s
     try:
@@ -240,13 +246,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     E = _core.reduced_modulus_Pa(material.core, material.core)
     race = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B, bearing.zhou_hoeprich_raceway_C, E)
     rib = T.SurfacePair(bearing.sigma_rib_m, bearing.zhou_hoeprich_rib_B, bearing.zhou_hoeprich_rib_C, E)
-    loads = Q.BearingLoads()
-    if axial_offset_m is not None:
-        loads.axial_offset_controlled = True
-        loads.axial_offset_m = axial_offset_m
-    else:
-        loads.axial_N = axial_N
-    loads.radial_N = radial_N
+    loads = _loads(axial_N, axial_offset_m, radial_N, 0.0, misalignment_rad)
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
     f = Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant), race, rib,
                                     rib_cells, cage)

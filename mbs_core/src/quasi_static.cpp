@@ -121,11 +121,8 @@ RollerEval eval_roller(const BearingModel& m, BearingData& d, std::vector<SliceG
   }
   r.Qi = d.inner_lines[j].force_N;
   // rib (closed-form elliptic Hertz contact at the closest point)
-  RollerEnd end{Mi + v.end_sphere_offset_m * ai, ai, v.end_sphere_radius_m, v.end_cap_radius_m};
-  RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
-  double h0 = 0.0;
   Eigen::Vector3d pc, nc;
-  const double gmin = rib_gap(end, rib, 1, 1, 1e-6, 1e-6, &h0, pc, nc);
+  const double gmin = m.rib_closest(Mi, ai, pc, nc);
   if (gmin < 0.0) {
     r.Qrib = hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -gmin).load_N;
     const Eigen::Vector3d f = ring.R * (r.Qrib * nc);
@@ -239,17 +236,29 @@ BearingModel::BearingModel(const BearingModelValues& v)
   // principal relative radii of the rib contact from the gap on a stencil at the nominal pose
   const Eigen::Vector3d M(v.pitch_radius_m, 0.0, v.roller_mid_z_m);
   const Eigen::Vector3d a(std::sin(v.roller_axis_angle_rad), 0.0, std::cos(v.roller_axis_angle_rad));
-  RollerEnd end{M + v.end_sphere_offset_m * a, a, v.end_sphere_radius_m, v.end_cap_radius_m};
-  RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
   const double h = 1e-4;
   double st[9];
   Eigen::Vector3d p, n;
-  rib_gap(end, rib, 3, 3, h, h, st, p, n);
+  rib_gap(roller_end(M, a), rib_face(), 3, 3, h, h, st, p, n);
   rib_Rx_ = h * h / (st[1] + st[7] - 2 * st[4]);
   rib_Ry_ = h * h / (st[3] + st[5] - 2 * st[4]);
   if (!(rib_Rx_ > 0.0) || !(rib_Ry_ > 0.0)) {
     throw std::invalid_argument("BearingModel: the roller end and the rib do not form a convex contact");
   }
+}
+
+RollerEnd BearingModel::roller_end(const Eigen::Vector3d& M, const Eigen::Vector3d& a) const noexcept {
+  return {M + v_.end_sphere_offset_m * a, a, v_.end_sphere_radius_m, v_.end_cap_radius_m};
+}
+
+RibFace BearingModel::rib_face() const noexcept {
+  return {{v_.rib_apex_z_m, v_.rib_half_angle_rad}, v_.rib_outer_radius_m};
+}
+
+double BearingModel::rib_closest(const Eigen::Vector3d& M, const Eigen::Vector3d& a, Eigen::Vector3d& p_RC,
+                                 Eigen::Vector3d& n_R) const noexcept {
+  double h0 = 0.0;  // a one-cell grid: only the closest point and its gap are wanted
+  return rib_gap(roller_end(M, a), rib_face(), 1, 1, 1e-6, 1e-6, &h0, p_RC, n_R);
 }
 
 BearingData::BearingData(const BearingModel& m)

@@ -234,11 +234,8 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     }
     // rib, as one elliptic contact
     const Eigen::Vector3d Mi = Rr.transpose() * (r.M - dr), ai = Rr.transpose() * r.a;
-    RollerEnd end{Mi + v.end_sphere_offset_m * ai, ai, v.end_sphere_radius_m, v.end_cap_radius_m};
-    RibFace rib{{v.rib_apex_z_m, v.rib_half_angle_rad}, v.rib_outer_radius_m};
-    double h0 = 0.0;
     Eigen::Vector3d pc, nc;
-    const double gmin = rib_gap(end, rib, 1, 1, 1e-6, 1e-6, &h0, pc, nc);
+    const double gmin = m.rib_closest(Mi, ai, pc, nc);
     if (gmin < 0.0) {
       const HertzEllipse hz = hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -gmin);
       const Eigen::Vector3d p_glob = Rr * pc + dr;
@@ -267,7 +264,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         cell_data = std::make_unique<CellContactData>(*cell_model);
         rib_h0.assign(size_t(rib_cells) * rib_cells, 0.0);
         Eigen::Vector3d pc2, nc2;
-        rib_gap(end, rib, rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
+        rib_gap(m.roller_end(Mi, ai), m.rib_face(), rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
         if (solve_cell_contact(*cell_model, *cell_data, rib_h0.data(), hz.load_N) < 0) return -1;
         // tangent basis of the grid (as in rib_gap), in the ring frame
         const Eigen::Vector3d er_r = Eigen::Vector3d(pc.x(), pc.y(), 0.0).normalized();

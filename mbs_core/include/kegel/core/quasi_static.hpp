@@ -62,6 +62,14 @@ class BearingModel {
   const LineContactModel& outer_line() const noexcept { return outer_; }
   double rib_Rx_m() const noexcept { return rib_Rx_; }
   double rib_Ry_m() const noexcept { return rib_Ry_; }
+  /// The large end of a roller with mid-point M and axis a (frame of the inner ring).
+  RollerEnd roller_end(const Eigen::Vector3d& M, const Eigen::Vector3d& a) const noexcept;
+  /// The rib face of the inner ring (its own frame).
+  RibFace rib_face() const noexcept;
+  /// Closest point and normal of the rib for a roller at (M, a) in the inner ring's frame;
+  /// returns the gap there (< 0: interference).
+  double rib_closest(const Eigen::Vector3d& M, const Eigen::Vector3d& a, Eigen::Vector3d& p_RC,
+                     Eigen::Vector3d& n_R) const noexcept;
 
  private:
   BearingModelValues v_;
