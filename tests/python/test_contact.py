@@ -121,3 +121,26 @@ def test_invalid_arguments(bearing):
         rc.solve_load(-5.0)
     with pytest.raises(ValueError, match="interference_m: 3 values: expected 10"):
         kegel._core.contact.solve_line_contact(rc.model, rc.data, [0.0, 1e-6, 0.0])
+
+
+@pytest.mark.parametrize("q_N_mm", [200.0, 1000.0])
+def test_alternative_slicing_matches_the_full_half_space(q_N_mm):
+    # The same unprofiled finite line contact solved by the cell model (Boussinesq on a 2D grid,
+    # FFT + CG): the AST's slice coupling must reproduce its approach.
+    C = kegel._core.contact
+    E, R, l = 210e9 / 0.91, 7.5e-3, 20e-3
+    Q = q_N_mm * l * 1e3
+    n = 60
+    line = C.LineContactModel(n, l, [R] * n, E, C.SliceMethod.alternative_slicing)
+    ast = C.solve_line_contact_load(line, C.LineContactData(line), [0.0] * n, Q)
+    b = np.sqrt(8 * q_N_mm * 1e3 * R / (np.pi * E))
+    nx, ny = 256, 48
+    wx, wy = 1.2 * l, 6 * b
+    x = (np.arange(nx) + 0.5) * wx / nx - wx / 2
+    y = (np.arange(ny) + 0.5) * wy / ny - wy / 2
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    h0 = np.where(np.abs(X) <= l / 2, Y**2 / (2 * R), 1.0)
+    cells = C.CellContactModel(nx, ny, wx / nx, wy / ny, E)
+    data = C.CellContactData(cells)
+    assert C.solve_cell_contact(cells, data, list(h0.ravel()), Q, 1e-9, 5000) == 0
+    assert ast == pytest.approx(data.approach_m, rel=0.015)
