@@ -126,24 +126,28 @@ void LineContactModel::influence_column(double b, double* v, double* t) const no
   // asymptote of H makes the difference (pi/2) ln(x2/x1) + (pi/32) b^2 (1/x2^2 - 1/x1^2)
   // - (3 pi/512) b^4 (1/x2^4 - 1/x1^4), whose logarithm does not depend on b.
   // Newton term: b ~ sqrt(q), so q dC/dq = (b/2) dC/db = -(c/2) [G(a2) - G(a1)], G(a) = a H'(a).
+  // t may be null: values only (the chord steps need no derivative).
   const double c = 4.0 / (kPi * kPi * E_);
   auto G = [](double a) { return a * strip_influence_dH(a); };
   double a_lo = 0.5 * w_ / b;
-  double h_lo = strip_influence_H(a_lo), g_lo = G(a_lo);
+  double h_lo = strip_influence_H(a_lo), g_lo = t ? G(a_lo) : 0.0;
   v[0] = c * 2.0 * h_lo;
-  t[0] = -c * g_lo;
+  if (t) t[0] = -c * g_lo;
   const double b2 = b * b, b4 = b2 * b2;
   for (int k = 1; k < n_; ++k) {
     if ((k - 0.5) * w_ >= 6.0 * b) {
       v[k] = c * (0.5 * kPi * far_log_[k] + (kPi / 32.0) * b2 * far_p2_[k] - (3.0 * kPi / 512.0) * b4 * far_p4_[k]);
-      t[k] = -0.5 * c * (-(kPi / 16.0) * b2 * far_p2_[k] + (3.0 * kPi / 128.0) * b4 * far_p4_[k]);
+      if (t) t[k] = -0.5 * c * (-(kPi / 16.0) * b2 * far_p2_[k] + (3.0 * kPi / 128.0) * b4 * far_p4_[k]);
     } else {
       const double a_hi = (k + 0.5) * w_ / b;
-      const double h_hi = strip_influence_H(a_hi), g_hi = G(a_hi);
+      const double h_hi = strip_influence_H(a_hi);
       v[k] = c * (h_hi - h_lo);
-      t[k] = -0.5 * c * (g_hi - g_lo);
       h_lo = h_hi;
-      g_lo = g_hi;
+      if (t) {
+        const double g_hi = G(a_hi);
+        t[k] = -0.5 * c * (g_hi - g_lo);
+        g_lo = g_hi;
+      }
     }
   }
 }
@@ -193,6 +197,7 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
     if (!(emax > 0.0)) {
       std::fill(q, q + n, 0.0);
       d.has_active_ = false;
+      d.lu_valid_ = false;
     } else {
       int* act = d.active_.data();
       if (!d.has_active_) {
@@ -203,8 +208,70 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
         }
         d.has_active_ = true;
       }
+      // Chord steps with the factorisation of the previous solve (same active set): the state
+      // of a time step or sweep point differs little from the last one, so
+      // q <- q - J_old^-1 (C(q) q - e) converges in a few steps at the cost of the influence
+      // values alone; anything else (a sign change, a new contact, slow progress) falls back to
+      // the Newton iteration below from the unchanged start.
       status = 1;
-      for (int outer = 0; outer < s.max_outer; ++outer) {
+      bool chord_done = false;
+      if (d.lu_valid_) {
+        std::copy(q, q + n, d.q_old_.begin());
+        double dq_prev = 0.0;
+        for (int it = 0; it < 4; ++it) {
+          ++d.iterations;
+          for (int j = 0; j < n; ++j) {
+            if (!act[j]) continue;
+            m.influence_column(hertz_half_width(q[j], m.reduced_radius_m(j), E), d.col_.data(), nullptr);
+            for (int i = 0; i < n; ++i) d.C_(i, j) = d.col_[i > j ? i - j : j - i];
+          }
+          double qmax = 0.0;
+          for (int i = 0; i < n; ++i) {
+            double r = 0.0;
+            if (act[i]) {
+              for (int j = 0; j < n; ++j)
+                if (act[j]) r += d.C_(i, j) * q[j];
+              r -= e[i];
+            }
+            d.sol_[i] = r;
+            qmax = std::max(qmax, q[i]);
+          }
+          d.sol_ = d.lu_.solve(d.sol_);
+          double dq = 0.0;
+          bool sign_ok = true;
+          for (int i = 0; i < n; ++i) {
+            if (!act[i]) continue;
+            q[i] -= d.sol_[i];
+            dq = std::max(dq, std::abs(d.sol_[i]));
+            if (!(q[i] >= 0.0)) sign_ok = false;
+          }
+          if (!sign_ok) break;
+          // linear convergence: the next correction is about dq * (dq / dq_prev)
+          const double next = dq_prev > 0.0 ? dq * dq / dq_prev : dq;
+          dq_prev = dq;
+          if (dq_prev > 0.0 && next > dq) break;  // not contracting: Newton instead
+          if (next <= s.tolerance * qmax) {
+            // complementarity of the inactive slices with the converged loads
+            bool gaps_ok = true;
+            for (int i = 0; i < n && gaps_ok; ++i) {
+              if (act[i]) continue;
+              double u = 0.0;
+              for (int j = 0; j < n; ++j)
+                if (act[j]) u += d.C_(i, j) * q[j];
+              if (u < e[i] - 1e-12 * emax) gaps_ok = false;
+            }
+            chord_done = gaps_ok;
+            break;
+          }
+        }
+        if (chord_done) {
+          status = 0;
+        } else {
+          std::copy(d.q_old_.begin(), d.q_old_.end(), q);
+        }
+      }
+      if (!chord_done) d.lu_valid_ = false;  // the Newton passes below refactorise
+      for (int outer = 0; outer < s.max_outer && !chord_done; ++outer) {
         ++d.iterations;
         for (int j = 0; j < n; ++j) {
           m.influence_column(hertz_half_width(q[j], m.reduced_radius_m(j), E), d.col_.data(), d.tcol_.data());
@@ -269,6 +336,7 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
         // sqrt(tol) leaves an error of order tol, so the confirming step is skipped.
         if (dq <= s.tolerance * qmax || (outer > 0 && !set_changed && dq <= std::sqrt(s.tolerance) * qmax)) {
           status = 0;
+          d.lu_valid_ = true;  // the factorisation of this active set serves the next chord steps
           break;
         }
       }

@@ -82,7 +82,8 @@ class LineContactModel {
   /// Column of the AST influence matrix for a slice of half-width b: v[k] is the displacement
   /// of a slice k slices away per unit line load [m / (N/m)], k = 0 .. n-1. Far from the band
   /// (|x|/b >= 6) the b-independent logarithm is precomputed.
-  /// t[k] = q dC(k)/dq for the same column (Newton term; C depends on q through b ~ sqrt(q)).
+  /// t[k] = q dC(k)/dq for the same column (Newton term; C depends on q through b ~ sqrt(q));
+  /// t may be null when only the values are wanted.
   void influence_column(double b, double* v, double* t) const noexcept;
 
  private:
@@ -122,6 +123,7 @@ class LineContactData {
   std::vector<double> q_old_, col_, tcol_, e_;
   std::vector<int> active_;
   bool has_active_ = false;
+  bool lu_valid_ = false;  // lu_ factorises the Newton matrix of the current active set
 };
 
 /// Line loads for given interferences e_i (n values): displacement control.
