@@ -180,8 +180,6 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
                               const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
                               int rib_cells, bool cage) noexcept {
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
-  std::unique_ptr<CellContactModel> cell_model;
-  std::unique_ptr<CellContactData> cell_data;
   std::vector<double> rib_h0;
   const auto& v = m.values();
   const int Z = v.roller_count, n = v.slices;
@@ -195,6 +193,35 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   for (int i = 0; i < n; ++i) xi[i] = m.outer_line().position_m(i);
   std::vector<SliceGeometry> geo(n);
   std::vector<Roller> rollers(Z);
+  if (rib_cells > 0) {
+    // size the grid by the largest rib load of all rollers
+    double q_max = 0.0;
+    for (int j = 0; j < (d.symmetric ? 1 : Z); ++j) {
+      const double psi = 2.0 * kPi * j / Z;
+      const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0), et(-std::sin(psi), std::cos(psi), 0.0);
+      const auto& st = d.rollers[j];
+      const Eigen::Vector3d M = (v.pitch_radius_m + st.u_m) * er + (v.roller_mid_z_m + st.w_m) * Eigen::Vector3d::UnitZ();
+      const Eigen::Vector3d a = Eigen::AngleAxisd(st.tilt_rad, et) *
+                                (std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * Eigen::Vector3d::UnitZ());
+      Eigen::Vector3d pc, nc;
+      const double g = m.rib_closest(Rr.transpose() * (M - dr), Rr.transpose() * a, pc, nc);
+      if (g < 0.0) q_max = std::max(q_max, hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -g).load_N);
+    }
+    if (q_max > 0.0) {
+      const HertzEllipse hz = hertz_point_contact_load(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, q_max);
+      const bool x_minor = m.rib_Rx_m() <= m.rib_Ry_m();
+      const double dx = 6.0 * (x_minor ? hz.semi_minor_m : hz.semi_major_m) / rib_cells;
+      const double dy = 6.0 * (x_minor ? hz.semi_major_m : hz.semi_minor_m) / rib_cells;
+      const bool reuse = d.rib_grid_ && d.rib_grid_->nx() == rib_cells && dx > 0.8 * d.rib_dx_ && dx < 1.25 * d.rib_dx_;
+      if (!reuse) {
+        d.rib_grid_ = std::make_shared<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
+        d.rib_fields_.clear();
+        for (int j = 0; j < Z; ++j) d.rib_fields_.push_back(std::make_shared<CellContactData>(*d.rib_grid_));
+        d.rib_dx_ = dx;
+        d.rib_dy_ = dy;
+      }
+    }
+  }
   // contact points at the load distribution (an axisymmetric case needs roller 0 only)
   const int Zc = d.symmetric ? 1 : Z;
   const double weight = d.symmetric ? double(Z) : 1.0;
@@ -254,18 +281,14 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         c.rib_area = kPi * hz.semi_major_m * hz.semi_minor_m;
         r.points.push_back(c);
       } else {
-        // cell model: grid x along the rib generator (the smaller radius, semi-minor axis),
-        // y circumferential (semi-major); window of 3 semi-axes each way
-        const bool x_minor = m.rib_Rx_m() <= m.rib_Ry_m();
-        const double sx = x_minor ? hz.semi_minor_m : hz.semi_major_m;
-        const double sy = x_minor ? hz.semi_major_m : hz.semi_minor_m;
-        const double dx = 6.0 * sx / rib_cells, dy = 6.0 * sy / rib_cells;
-        cell_model = std::make_unique<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
-        cell_data = std::make_unique<CellContactData>(*cell_model);
+        // cell model on the bearing's rib grid (x along the rib generator, y circumferential)
+        if (!d.rib_grid_) return -1;
+        const double dx = d.rib_dx_, dy = d.rib_dy_;
+        CellContactData& field = *d.rib_fields_[j];
         rib_h0.assign(size_t(rib_cells) * rib_cells, 0.0);
         Eigen::Vector3d pc2, nc2;
         rib_gap(m.roller_end(Mi, ai), m.rib_face(), rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
-        if (solve_cell_contact(*cell_model, *cell_data, rib_h0.data(), hz.load_N) < 0) return -1;
+        if (solve_cell_contact(*d.rib_grid_, field, rib_h0.data(), hz.load_N) < 0) return -1;
         // tangent basis of the grid (as in rib_gap), in the ring frame
         const Eigen::Vector3d er_r = Eigen::Vector3d(pc.x(), pc.y(), 0.0).normalized();
         const Eigen::Vector3d t1 = std::cos(v.rib_half_angle_rad) * Eigen::Vector3d::UnitZ() +
@@ -273,7 +296,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         const Eigen::Vector3d t2(-er_r.y(), er_r.x(), 0.0);
         for (int ix = 0; ix < rib_cells; ++ix) {
           for (int iy = 0; iy < rib_cells; ++iy) {
-            const double pr = cell_data->pressure_Pa[ix * rib_cells + iy];
+            const double pr = field.pressure_Pa[ix * rib_cells + iy];
             if (!(pr > 0.0)) continue;
             Point c;
             const Eigen::Vector3d q = pc + ((ix + 0.5 - 0.5 * rib_cells) * dx) * t1 + ((iy + 0.5 - 0.5 * rib_cells) * dy) * t2;
@@ -346,21 +369,103 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   };
   std::vector<double> spins(Z);
   if (int(d.spin_ratio_.size()) != Z) d.spin_ratio_.assign(Z, 1.0);
-  auto C = [&](double w_c) { return spin_for_cage(w_c, spins); };
-  double w_c = wc0;
-  const double tol_c = 1e-13 * std::abs(wc0);
-  const double guess = wc0 * d.cage_ratio_;
-  if (!secant(C, guess, guess * (1.0 + 1e-7), tol_c, w_c)) {
-    double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
-    for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-      lo = wc0 + (lo - wc0) * 2.0;
-      hi = wc0 + (hi - wc0) * 2.0;
-      flo = C(lo);
-      fhi = C(hi);
+  // Coupled Newton on (cage speed, roller spins), warm-started from the last slips: the
+  // Jacobian is an arrow (each roller's spin balance depends on its spin and the cage speed,
+  // the cage balance on all), so it reduces to one scalar equation for the cage speed.
+  double w_c = wc0 * d.cage_ratio_;
+  for (int j = 0; j < Z; ++j) spins[j] = wR0 * (w_c / wc0) * d.spin_ratio_[j];
+  bool newton_ok = false;
+  double cage_residual = 0.0;
+  {
+    // derivatives by finite differences, reused across iterations and operating points while
+    // the iteration contracts (chord); recomputed when it does not
+    std::vector<double> S(Zc), A(Zc);
+    if (int(d.dSw_.size()) != Zc) {
+      d.dSw_.assign(Zc, 1.0);
+      d.dSc_.assign(Zc, 0.0);
+      d.dAw_.assign(Zc, 0.0);
+      d.dAc_.assign(Zc, 0.0);
+      d.derivatives_valid_ = false;
     }
-    if (!brent(C, lo, hi, flo, fhi, tol_c, w_c)) status = 1;
+    std::vector<double>& Sw = d.dSw_;
+    std::vector<double>& Sc = d.dSc_;
+    std::vector<double>& Aw = d.dAw_;
+    std::vector<double>& Ac = d.dAc_;
+    const double hw = 1e-7 * std::abs(wR0), hc = 1e-7 * std::abs(wc0);
+    double last_step = INFINITY;
+    for (int it = 0; it < 16 && !newton_ok; ++it) {
+      const bool fresh = !d.derivatives_valid_;
+      double num = 0.0, den = 0.0;
+      cage_residual = 0.0;
+      for (int j = 0; j < Zc; ++j) {
+        const Roller& r = rollers[j];
+        if (r.points.empty()) {
+          S[j] = A[j] = Sc[j] = Aw[j] = Ac[j] = 0.0;
+          Sw[j] = 1.0;
+          continue;
+        }
+        const Eval e0 = eval(r, spins[j], w_c, w_i, lub, fp, race, ribp, false, cage);
+        S[j] = e0.spin_moment;
+        A[j] = weight * e0.axis_moment;
+        if (fresh) {
+          const Eval e1 = eval(r, spins[j] + hw, w_c, w_i, lub, fp, race, ribp, false, cage);
+          const Eval e2 = eval(r, spins[j], w_c + hc, w_i, lub, fp, race, ribp, false, cage);
+          Sw[j] = (e1.spin_moment - S[j]) / hw;
+          Sc[j] = (e2.spin_moment - S[j]) / hc;
+          Aw[j] = weight * (e1.axis_moment - e0.axis_moment) / hw;
+          Ac[j] = weight * (e2.axis_moment - e0.axis_moment) / hc;
+          if (!(std::abs(Sw[j]) > 0.0)) Sw[j] = 1.0;
+        }
+        num += A[j] - Aw[j] * S[j] / Sw[j];
+        den += Ac[j] - Aw[j] * Sc[j] / Sw[j];
+        cage_residual += A[j];
+      }
+      d.derivatives_valid_ = true;
+      if (!(std::abs(den) > 0.0) || !std::isfinite(num / den)) break;
+      const double dc = -num / den;
+      std::vector<double> dw(Zc);
+      double dw_max = 0.0;
+      for (int j = 0; j < Zc; ++j) {
+        dw[j] = rollers[j].points.empty() ? wR0 * (w_c + dc) / wc0 - spins[j] : -(S[j] + Sc[j] * dc) / Sw[j];
+        dw_max = std::max(dw_max, std::abs(dw[j]) / std::abs(wR0));
+      }
+      const double step = std::max(std::abs(dc) / std::abs(wc0), dw_max);
+      if (!fresh && step > 0.1 * last_step) {
+        // the reused derivatives no longer contract well: recompute them at this iterate
+        d.derivatives_valid_ = false;
+        last_step = INFINITY;
+        continue;
+      }
+      for (int j = 0; j < Zc; ++j) spins[j] += dw[j];
+      w_c += dc;
+      for (int j = Zc; j < Z; ++j) spins[j] = spins[0];
+      last_step = step;
+      if (!std::isfinite(w_c) || std::abs(w_c - wc0) > 0.5 * std::abs(wc0)) {
+        d.derivatives_valid_ = false;
+        break;
+      }
+      if (step <= 1e-12) newton_ok = true;
+    }
   }
-  out.cage_residual_Nm = spin_for_cage(w_c, spins);
+  if (!newton_ok) {
+    // fallback: nested scalar root finding (secant, then Brent)
+    auto C = [&](double wc) { return spin_for_cage(wc, spins); };
+    w_c = wc0;
+    const double tol_c = 1e-13 * std::abs(wc0);
+    const double guess = wc0 * d.cage_ratio_;
+    if (!secant(C, guess, guess * (1.0 + 1e-7), tol_c, w_c)) {
+      double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
+      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+        lo = wc0 + (lo - wc0) * 2.0;
+        hi = wc0 + (hi - wc0) * 2.0;
+        flo = C(lo);
+        fhi = C(hi);
+      }
+      if (!brent(C, lo, hi, flo, fhi, tol_c, w_c)) status = 1;
+    }
+    cage_residual = spin_for_cage(w_c, spins);
+  }
+  out.cage_residual_Nm = cage_residual;
   out.cage_speed_rad_s = w_c;
   out.roller_spin_rad_s = spins;
   d.cage_ratio_ = w_c / wc0;

@@ -18,8 +18,10 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <memory>
 #include <vector>
 
+#include "kegel/core/cell_contact.hpp"
 #include "kegel/core/contact_geometry.hpp"
 #include "kegel/core/line_contact.hpp"
 #include "kegel/core/slice.hpp"
@@ -130,6 +132,13 @@ class BearingData {
                                        const SurfacePair&, BearingFriction&, int, bool) noexcept;
   std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
   double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
+  std::vector<double> dSw_, dSc_, dAw_, dAc_;  // spin/cage balance derivatives, reused (chord)
+  bool derivatives_valid_ = false;
+  // rib cell model: one grid for all rollers (sized by the largest rib load, reused while the
+  // size stays within 20 %), a warm-started pressure field per roller
+  std::shared_ptr<CellContactModel> rib_grid_;
+  std::vector<std::shared_ptr<CellContactData>> rib_fields_;
+  double rib_dx_ = 0.0, rib_dy_ = 0.0;
   std::vector<SliceGeometry> geo_;
   std::vector<double> e_;
   Eigen::MatrixXd ring_jacobian_;  // reused across iterations and operating points (chord Newton)
