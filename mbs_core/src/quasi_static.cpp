@@ -78,12 +78,9 @@ RollerEval eval_roller(const BearingModel& m, BearingData& d, std::vector<SliceG
                        std::vector<double>& e, int j, const Pose& ring, const Eigen::Vector3d& dof,
                        double omega_c) {
   const auto& v = m.values();
-  const double psi = 2.0 * kPi * j / v.roller_count;
-  const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0), et(-std::sin(psi), std::cos(psi), 0.0);
+  const RollerPose pose = m.roller_pose(j, dof[0], dof[1], dof[2]);
+  const Eigen::Vector3d &er = pose.e_r, &et = pose.e_t, &M = pose.M, &a = pose.a;
   const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
-  const Eigen::Vector3d M = (v.pitch_radius_m + dof[0]) * er + (v.roller_mid_z_m + dof[1]) * ez;
-  const Eigen::Vector3d a0 = std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * ez;
-  const Eigen::Vector3d a = Eigen::AngleAxisd(dof[2], et) * a0;
   const RollerShape shape{v.roller_mean_radius_m, v.roller_half_angle_rad, v.roller_length_m};
   const int n = v.slices;
   const double w = m.outer_line().width_m();
@@ -245,6 +242,18 @@ BearingModel::BearingModel(const BearingModelValues& v)
   if (!(rib_Rx_ > 0.0) || !(rib_Ry_ > 0.0)) {
     throw std::invalid_argument("BearingModel: the roller end and the rib do not form a convex contact");
   }
+}
+
+RollerPose BearingModel::roller_pose(int j, double u, double w, double tilt) const noexcept {
+  const double psi = 2.0 * kPi * j / v_.roller_count;
+  RollerPose p;
+  p.e_r = Eigen::Vector3d(std::cos(psi), std::sin(psi), 0.0);
+  p.e_t = Eigen::Vector3d(-std::sin(psi), std::cos(psi), 0.0);
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+  p.M = (v_.pitch_radius_m + u) * p.e_r + (v_.roller_mid_z_m + w) * ez;
+  p.a = Eigen::AngleAxisd(tilt, p.e_t) *
+        (std::sin(v_.roller_axis_angle_rad) * p.e_r + std::cos(v_.roller_axis_angle_rad) * ez);
+  return p;
 }
 
 RollerEnd BearingModel::roller_end(const Eigen::Vector3d& M, const Eigen::Vector3d& a) const noexcept {

@@ -197,14 +197,10 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     // size the grid by the largest rib load of all rollers
     double q_max = 0.0;
     for (int j = 0; j < (d.symmetric ? 1 : Z); ++j) {
-      const double psi = 2.0 * kPi * j / Z;
-      const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0), et(-std::sin(psi), std::cos(psi), 0.0);
       const auto& st = d.rollers[j];
-      const Eigen::Vector3d M = (v.pitch_radius_m + st.u_m) * er + (v.roller_mid_z_m + st.w_m) * Eigen::Vector3d::UnitZ();
-      const Eigen::Vector3d a = Eigen::AngleAxisd(st.tilt_rad, et) *
-                                (std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * Eigen::Vector3d::UnitZ());
+      const RollerPose pose = m.roller_pose(j, st.u_m, st.w_m, st.tilt_rad);
       Eigen::Vector3d pc, nc;
-      const double g = m.rib_closest(Rr.transpose() * (M - dr), Rr.transpose() * a, pc, nc);
+      const double g = m.rib_closest(Rr.transpose() * (pose.M - dr), Rr.transpose() * pose.a, pc, nc);
       if (g < 0.0) q_max = std::max(q_max, hertz_point_contact_approach(m.rib_Rx_m(), m.rib_Ry_m(), v.E_reduced_Pa, -g).load_N);
     }
     if (q_max > 0.0) {
@@ -227,14 +223,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   const double weight = d.symmetric ? double(Z) : 1.0;
   for (int j = 0; j < Zc; ++j) {
     Roller& r = rollers[j];
-    const double psi = 2.0 * kPi * j / Z;
-    const Eigen::Vector3d er(std::cos(psi), std::sin(psi), 0.0);
-    r.et = Eigen::Vector3d(-std::sin(psi), std::cos(psi), 0.0);
-    r.radius = v.roller_mean_radius_m;
     const auto& st = d.rollers[j];
-    r.M = (v.pitch_radius_m + st.u_m) * er + (v.roller_mid_z_m + st.w_m) * Eigen::Vector3d::UnitZ();
-    r.a = Eigen::AngleAxisd(st.tilt_rad, r.et) *
-          (std::sin(v.roller_axis_angle_rad) * er + std::cos(v.roller_axis_angle_rad) * Eigen::Vector3d::UnitZ());
+    const RollerPose pose = m.roller_pose(j, st.u_m, st.w_m, st.tilt_rad);
+    r.et = pose.e_t;
+    r.M = pose.M;
+    r.a = pose.a;
+    r.radius = v.roller_mean_radius_m;
     for (int side = 0; side < 2; ++side) {
       const bool outer = side == 0;
       const Eigen::Vector3d M = outer ? r.M : Eigen::Vector3d(Rr.transpose() * (r.M - dr));

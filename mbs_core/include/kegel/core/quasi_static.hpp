@@ -55,8 +55,16 @@ struct BearingModelValues {
   SliceMethod method = SliceMethod::AlternativeSlicing;
 };
 
+/// A roller's place in frame R: mid-point M, axis a (small -> large end), and the radial and
+/// circumferential unit vectors of its azimuth.
+struct RollerPose {
+  Eigen::Vector3d M, a, e_r, e_t;
+};
+
 class BearingModel {
  public:
+  /// Pose of roller j (azimuth 2 pi j / Z) displaced by u (radial), w (axial), tilt (about e_t).
+  RollerPose roller_pose(int j, double u_m, double w_m, double tilt_rad) const noexcept;
   explicit BearingModel(const BearingModelValues& v);  ///< throws std::invalid_argument
   const BearingModelValues& values() const noexcept { return v_; }
   const RollerProfile& profile() const noexcept { return profile_; }
