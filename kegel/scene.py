@@ -45,7 +45,7 @@ from __future__ import annotations
 import copy
 import itertools
 import tomllib
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from typing import Any
@@ -556,9 +556,3 @@ def load_scene(path: str | Path, overrides: list[str] | tuple[str, ...] = ()) ->
     raw = read_toml(path)
     raw, keys = apply_overrides(raw, overrides)
     return scene_from_dict(raw, source=path, overridden=keys)
-
-
-def with_fidelity(scene: Scene, **changes: Any) -> Scene:
-    """A copy of ``scene`` with some fidelity options changed (for fidelity studies)."""
-    return replace(scene, fidelity=replace(scene.fidelity, **changes))
-

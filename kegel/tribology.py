@@ -217,12 +217,9 @@ def evaluate_raceway_contact(
 
     steel = material.core
     E = _core.reduced_modulus_Pa(steel, steel)
-    if contact == "inner":
-        pair = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B,
-                             bearing.zhou_hoeprich_raceway_C, E)
-    else:  # the paper gives one raceway roughness for both rings
-        pair = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B,
-                             bearing.zhou_hoeprich_raceway_C, E)
+    # the paper gives one raceway roughness for both rings
+    pair = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B,
+                         bearing.zhou_hoeprich_raceway_C, E)
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
     fp = friction.core(lubricant)
 

@@ -26,9 +26,6 @@ inline double cone_distance(const Cone& c, const Eigen::Vector3d& p, Eigen::Vect
   return -sp * (p.z() - c.apex_z_m) + cp * m.r;
 }
 
-// Palmgren (N, m): Q = K l^(8/9) delta^(10/9), see line_contact.cpp.
-const double kPalmgrenSI = std::pow(3.84e-5, -10.0 / 9.0) * 1e6;
-
 }  // namespace
 
 void raceway_slice_geometry(const RollerShape& roller, const RollerProfile& profile,
@@ -94,7 +91,6 @@ double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double 
   const Eigen::Vector3d t2(-m.e_r.y(), m.e_r.x(), 0.0);                  // circumferential
   const Eigen::Vector3d a = end.a_R.normalized();
   const double R = end.sphere_radius_m;
-  double gmin = INFINITY;
   for (int i = 0; i < nx; ++i) {
     for (int j = 0; j < ny; ++j) {
       const Eigen::Vector3d q = p_RC + ((i + 0.5 - 0.5 * nx) * dx) * t1 + ((j + 0.5 - 0.5 * ny) * dy) * t2;
@@ -122,12 +118,10 @@ double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double 
         if (on_cap && on_rib) gap = ss - sr;
       }
       h0[i * ny + j] = gap;
-      gmin = std::min(gmin, gap);
     }
   }
   // the true minimum is at the foot of the sphere centre (off the grid's cell centres)
   const double g_true = s - R;
-  (void)gmin;
   for (int k = 0; k < nx * ny; ++k) h0[k] -= g_true;
   return g_true;
 }
@@ -141,7 +135,7 @@ CagePocketResult cage_pocket_contact(const RollerShape& roller, const CagePocket
   const Eigen::Vector3d a = a_P_in.normalized();
   const double tan_g = std::tan(roller.half_angle_rad);
   const double seg = roller.length_m / n_points;
-  const double k = kPalmgrenSI * std::pow(roller.length_m, 8.0 / 9.0) / n_points;  // share of the line
+  const double k = palmgren_stiffness(roller.length_m) / n_points;  // share of the line
   const double ct = std::cos(pocket.taper_rad), st = std::sin(pocket.taper_rad);
   for (int wall = -1; wall <= 1; wall += 2) {
     const Eigen::Vector3d e(wall * ct, -st, 0.0);  // outward normal of the wall

@@ -17,6 +17,12 @@ constexpr double kPi = 3.14159265358979323846;
 const double kPalmgrenSI = std::pow(3.84e-5, -10.0 / 9.0) * 1e6;
 }  // namespace
 
+double palmgren_approach_m(double Q, double l) noexcept {
+  return 3.84e-5 * std::pow(std::max(Q, 0.0), 0.9) / std::pow(l * 1e3, 0.8) * 1e-3;
+}
+
+double palmgren_stiffness(double l) noexcept { return kPalmgrenSI * std::pow(l, 8.0 / 9.0); }
+
 // ---------------------------------------------------------------------------------------------
 RollerProfile::RollerProfile(const Values& v) : v_(v) {
   using namespace detail;
@@ -109,7 +115,7 @@ LineContactModel::LineContactModel(int n, double l, const std::vector<double>& R
   }
   for (double r : R) detail::require_positive("LineContactModel", "reduced_radius_m", r);
   w_ = l / n;
-  k_slice_ = kPalmgrenSI * std::pow(l, 8.0 / 9.0) / n;
+  k_slice_ = palmgren_stiffness(l) / n;
   far_log_.assign(n, 0.0);
   far_p2_.assign(n, 0.0);
   far_p4_.assign(n, 0.0);
@@ -184,9 +190,11 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
   double* q = d.line_load_N_m.data();
   int status = 0;
   d.iterations = 0;
+  // line load of an independent slice (its share of Palmgren's stiffness)
+  auto independent = [&](double ei) { return ei > 0.0 ? m.slice_stiffness() * std::pow(ei, 10.0 / 9.0) / w : 0.0; };
 
   if (m.method() == SliceMethod::Independent) {
-    for (int i = 0; i < n; ++i) q[i] = e[i] > 0.0 ? m.slice_stiffness() * std::pow(e[i], 10.0 / 9.0) / w : 0.0;
+    for (int i = 0; i < n; ++i) q[i] = independent(e[i]);
   } else {
     // AST: C_ij = C(|i - j|; b_j) (LineContactModel::influence_column). b_j depends on q_j, so
     // Newton steps on C(q) q = e: J = C + T with T_ij = q_j dC_ij/dq_j, J q = e + T q_old, each
@@ -204,7 +212,7 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
         for (int i = 0; i < n; ++i) {
           act[i] = e[i] > 0.0;
           // cold start from the independent-slice (Palmgren) loads
-          q[i] = e[i] > 0.0 ? m.slice_stiffness() * std::pow(e[i], 10.0 / 9.0) / w : 0.0;
+          q[i] = independent(e[i]);
         }
         d.has_active_ = true;
       }
@@ -369,7 +377,7 @@ int solve_line_contact_load(const LineContactModel& m, LineContactData& d, const
     return d.force_N - force;
   };
   // bracket: the Palmgren approach of the whole line is a good scale
-  const double scale = 3.84e-5 * std::pow(force, 0.9) / std::pow(m.length_m() * 1e3, 0.8) * 1e-3;
+  const double scale = palmgren_approach_m(force, m.length_m());
   double lo = gmin, flo = -force;
   double hi = gmin + scale, fhi = F(hi);
   for (int k = 0; k < 60 && fhi < 0.0; ++k) {

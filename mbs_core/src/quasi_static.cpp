@@ -87,7 +87,6 @@ RollerEval eval_roller(const BearingModel& m, BearingData& d, std::vector<SliceG
   RollerEval r;
   Eigen::Vector3d F = Eigen::Vector3d::Zero(), Mo = Eigen::Vector3d::Zero();
   const Eigen::Vector3d O(0.0, 0.0, v.roller_mid_z_m);
-  std::vector<double> xi_dummy;  // positions come from the line model
   double* xi = e.data() + n;     // second half of e holds the slice positions
   for (int i = 0; i < n; ++i) xi[i] = m.outer_line().position_m(i);
 
@@ -219,7 +218,6 @@ Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d,
   return res;
 }
 
-double palmgren_m(double Q, double l) { return 3.84e-5 * std::pow(std::max(Q, 0.0), 0.9) / std::pow(l * 1e3, 0.8) * 1e-3; }
 
 }  // namespace
 
@@ -301,9 +299,8 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
   }
   const double l = v.roller_length_m;
   const double Fa_est = L.axial_offset_controlled
-                            ? v.roller_count * std::sin(v.cup_angle_rad) *
-                                  std::pow(0.5 * L.axial_offset_m * std::sin(v.cup_angle_rad) * 1e3 *
-                                               std::pow(l * 1e3, 0.8) / 3.84e-5, 1.0 / 0.9)
+                            ? v.roller_count * std::sin(v.cup_angle_rad) * palmgren_stiffness(l) *
+                                  std::pow(0.5 * L.axial_offset_m * std::sin(v.cup_angle_rad), 10.0 / 9.0)
                             : L.axial_N;
   const double scale = Fa_est + L.radial_N + std::abs(L.tilt_moment_Nm) / v.pitch_radius_m;
   Eigen::Matrix<double, 5, 1> x = d.ring;
@@ -311,10 +308,10 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     // start: Palmgren approaches for the mean roller loads of the axial and the radial share
     const double Qa = Fa_est / (v.roller_count * std::sin(v.cup_angle_rad));
     const double Qr = 4.08 * L.radial_N / (v.roller_count * std::cos(v.cup_angle_rad));
-    const double da = 2.0 * palmgren_m(Qa + 0.5 * Qr, l);
+    const double da = 2.0 * palmgren_approach_m(Qa + 0.5 * Qr, l);
     x.setZero();
     x[2] = -da / std::sin(v.cup_angle_rad);
-    x[0] = L.radial_N > 0.0 ? 2.0 * palmgren_m(Qr, l) / std::cos(v.cup_angle_rad) : 0.0;
+    x[0] = L.radial_N > 0.0 ? 2.0 * palmgren_approach_m(Qr, l) / std::cos(v.cup_angle_rad) : 0.0;
   }
   if (L.axial_offset_controlled) x[2] = -L.axial_offset_m;
   if (!L.tilt_free) {

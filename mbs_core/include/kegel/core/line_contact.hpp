@@ -51,6 +51,11 @@ class RollerProfile {
   double x_lin_ = 0.0, drop_lin_ = 0.0, slope_lin_ = 0.0;  // start, value and slope of the linear zone
 };
 
+/// Palmgren's roller/raceway approach delta = 3.84e-5 Q^0.9 / l^0.8 (N, mm), in SI [m].
+double palmgren_approach_m(double load_N, double length_m) noexcept;
+/// Its inverse as a stiffness: Q = palmgren_stiffness(l) delta^(10/9) [N / m^(10/9)].
+double palmgren_stiffness(double length_m) noexcept;
+
 /// Strip influence function H(a) = int_{-1}^{1} sqrt(1 - t^2) asinh(a / |t|) dt (odd in a);
 /// tabulated (mbs_core/tools/gen_strip_table.py) below a = 6, asymptotic above.
 double strip_influence_H(double a) noexcept;
