@@ -14,24 +14,32 @@ SUDO   := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # and the X/GL libraries the gmsh wheel loads.
 APT_PACKAGES := build-essential cmake ninja-build git python3 python3-venv python3-dev \
   libeigen3-dev libsundials-dev libfftw3-dev pkg-config libgtest-dev googletest \
-  openfoam openmpi-bin libopenmpi-dev \
+  openfoam openmpi-bin libopenmpi-dev bzip2 \
   libglu1-mesa libxcursor1 libxinerama1 libxft2 libxrender1 libgl1
 
 # Python packages needed to build kegel itself (installed before the editable install, so the
 # build runs without isolation and reuses them).
 BUILD_PACKAGES := "scikit-build-core>=0.10" "nanobind>=2.0"
 
+# OpenFOAM solvers rebuilt without tree vectorisation (cfd_cases/solvers/build_solvers.sh); the
+# runner finds them here (kegel.cfd_cases.foam.solver_dir).
+OPENFOAM_BIN ?= $(HOME)/.local/share/kegel/openfoam-v1912/bin
+export KEGEL_OPENFOAM_BIN := $(OPENFOAM_BIN)
+
 CORE_SOURCES := $(shell find mbs_core -type f 2>/dev/null) CMakeLists.txt pyproject.toml
 
-.PHONY: help setup apt venv install demo test test-cpp test-python bench clean
+.PHONY: help setup apt openfoam-solvers venv install demo test test-cpp test-python bench clean
 
 help:
 	@echo "make demo   - set up (apt, venv, build) and run the 32216 Table 1 scene"
 	@echo "make test   - set up and run every test (C++ ctest + pytest, OpenFOAM included)"
 	@echo "make bench  - set up and run the benchmarks in benchmarks/"
-	@echo "make setup  - install system packages, create .venv, editable install of kegel"
+	@echo "make setup  - install system packages, rebuild the OpenFOAM solvers, create .venv, install kegel"
 
-setup: apt $(STAMP)/install
+setup: apt openfoam-solvers $(STAMP)/install
+
+openfoam-solvers: apt
+	@bash cfd_cases/solvers/build_solvers.sh "$(OPENFOAM_BIN)"
 
 apt:
 	@missing=""; for p in $(APT_PACKAGES); do \
@@ -65,7 +73,7 @@ test-cpp: apt
 	cmake --build build/cpp -j 2
 	ctest --test-dir build/cpp --output-on-failure
 
-test-python: $(STAMP)/install
+test-python: openfoam-solvers $(STAMP)/install
 	$(PY) -m pytest -ra
 
 bench: setup

@@ -1,6 +1,29 @@
-"""OpenFOAM case templates, gmsh geometry and the case runner.
+"""OpenFOAM cases of the bearing: solvers, case templates, gmsh geometry, runner, post-processing.
 
 Mapped into the import package as ``kegel.cfd_cases``.
 """
 
-__all__: list[str] = []
+from .checks import RotationCheck, rotation_check
+from .foam import (
+    FoamDivergenceError,
+    FoamError,
+    FoamRunError,
+    FoamSetupError,
+    run_solver,
+    run_utility,
+    solver_executable,
+)
+from .template import render_case
+
+__all__ = [
+    "FoamDivergenceError",
+    "FoamError",
+    "FoamRunError",
+    "FoamSetupError",
+    "RotationCheck",
+    "render_case",
+    "rotation_check",
+    "run_solver",
+    "run_utility",
+    "solver_executable",
+]

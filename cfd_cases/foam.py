@@ -1,0 +1,443 @@
+"""Running OpenFOAM v1912 (Debian) from Python: environment, solvers, logs, divergence.
+
+The solvers are the ones ``make setup`` rebuilt without tree vectorisation
+(``cfd_cases/solvers/build_solvers.sh``); the Debian utilities (blockMesh, gmshToFoam, checkMesh,
+decomposePar, ...) are used as shipped. Every run writes its log into the case
+(``log.<application>``); a failing or diverging run raises an error that carries the reason and the
+log excerpt that shows it.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import shutil
+import signal
+import subprocess
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+__all__ = [
+    "FoamError",
+    "FoamSetupError",
+    "FoamRunError",
+    "FoamDivergenceError",
+    "LogState",
+    "RunSummary",
+    "SOLVERS",
+    "solver_dir",
+    "solver_executable",
+    "foam_environment",
+    "run_utility",
+    "run_solver",
+    "read_field",
+    "write_field_values",
+    "rotation_matrix",
+]
+
+#: Solvers kegel rebuilds (``make setup``); the Debian binaries of these are not used.
+SOLVERS = ("interFoam", "pimpleFoam", "simpleFoam")
+
+_DEFAULT_SOLVER_DIR = Path.home() / ".local" / "share" / "kegel" / "openfoam-v1912" / "bin"
+
+
+class FoamError(RuntimeError):
+    """Base class of OpenFOAM failures."""
+
+
+class FoamSetupError(FoamError):
+    """OpenFOAM or the rebuilt solvers are missing."""
+
+
+class FoamRunError(FoamError):
+    """An OpenFOAM application exited with an error.
+
+    Attributes
+    ----------
+    case, application, log_path, excerpt
+        Where it ran, what ran, the full log and the lines that show the failure.
+    """
+
+    def __init__(self, message: str, case: Path, application: str, log_path: Path, excerpt: str):
+        self.case = case
+        self.application = application
+        self.log_path = log_path
+        self.excerpt = excerpt
+        super().__init__(f"{message}\n  case: {case}\n  log: {log_path}\n--- log excerpt ---\n{excerpt}")
+
+
+class FoamDivergenceError(FoamRunError):
+    """A solver diverged (NaN, Courant number explosion, floating point exception)."""
+
+
+def solver_dir() -> Path:
+    """Directory of the rebuilt solvers (``$KEGEL_OPENFOAM_BIN`` or the ``make setup`` default)."""
+    env = os.environ.get("KEGEL_OPENFOAM_BIN")
+    return Path(env) if env else _DEFAULT_SOLVER_DIR
+
+
+def solver_executable(name: str, *, stock: bool = False) -> Path:
+    """Path of a solver binary.
+
+    Parameters
+    ----------
+    name
+        One of :data:`SOLVERS`.
+    stock
+        Return Debian's binary from /usr/bin instead (only for the tests that show it is broken).
+
+    Raises
+    ------
+    FoamSetupError
+        When the rebuilt binary is missing (``make setup`` builds it).
+    """
+    if name not in SOLVERS:
+        raise FoamSetupError(f"solver '{name}': expected one of {', '.join(SOLVERS)}")
+    if stock:
+        path = Path("/usr/bin") / name
+    else:
+        path = solver_dir() / name
+    if not os.access(path, os.X_OK):
+        raise FoamSetupError(
+            f"OpenFOAM solver {path} not found: run `make setup` (it rebuilds {name} without tree "
+            "vectorisation; see cfd_cases/solvers/build_solvers.sh) or set KEGEL_OPENFOAM_BIN"
+        )
+    return path
+
+
+def foam_environment() -> dict[str, str]:
+    """Environment for Debian's OpenFOAM v1912 binaries and Open MPI as root."""
+    env = dict(os.environ)
+    env.setdefault("WM_PROJECT_DIR", "/usr/share/openfoam")
+    env.setdefault("WM_PROJECT_VERSION", "v1912")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    env.setdefault("OMPI_MCA_btl_vader_single_copy_mechanism", "none")
+    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    # One OpenMP/BLAS thread per rank: the ranks already use every core.
+    env.setdefault("OMP_NUM_THREADS", "1")
+    return env
+
+
+def _excerpt(lines: Sequence[str], n: int = 40) -> str:
+    return "".join(lines[-n:]).rstrip()
+
+
+def run_utility(
+    case: str | Path,
+    application: str,
+    *args: str,
+    log_name: str | None = None,
+    timeout_s: float = 3600.0,
+) -> str:
+    """Run an OpenFOAM utility in ``case`` and return its output.
+
+    The output is written to ``case/log.<log_name or application>``.
+
+    Raises
+    ------
+    FoamRunError
+        On a non-zero exit or a ``FOAM FATAL`` message, with the log excerpt.
+    """
+    case = Path(case)
+    exe = shutil.which(application, path="/usr/bin:" + os.environ.get("PATH", ""))
+    if exe is None:
+        raise FoamSetupError(f"OpenFOAM utility '{application}' not found: run `make setup`")
+    log = case / f"log.{log_name or application}"
+    proc = subprocess.run(
+        [exe, "-case", str(case), *args],
+        env=foam_environment(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        timeout=timeout_s,
+    )
+    log.write_text(proc.stdout)
+    if proc.returncode != 0 or "FOAM FATAL" in proc.stdout:
+        lines = proc.stdout.splitlines(keepends=True)
+        start = next((i for i, l in enumerate(lines) if "FOAM FATAL" in l), max(len(lines) - 30, 0))
+        raise FoamRunError(
+            f"{application} {' '.join(args)} failed (exit {proc.returncode})",
+            case, application, log, _excerpt(lines[max(start - 5, 0):start + 25], 30),
+        )
+    return proc.stdout
+
+
+_RE_TIME = re.compile(r"^Time = (\S+)")
+_RE_CO = re.compile(r"^Courant Number mean: (\S+) max: (\S+)")
+_RE_ACO = re.compile(r"^Interface Courant Number mean: (\S+) max: (\S+)")
+_RE_DT = re.compile(r"^deltaT = (\S+)")
+_RE_RES = re.compile(r"Solving for (\w+), Initial residual = (\S+), Final residual = (\S+)")
+_RE_EXEC = re.compile(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s")
+_RE_NAN = re.compile(r"(?<![A-Za-z])(nan|-nan|inf)(?![A-Za-z])", re.IGNORECASE)
+
+
+@dataclass
+class LogState:
+    """What the solver log has said so far."""
+
+    time: float = 0.0
+    delta_t: float = math.nan
+    courant_max: float = 0.0
+    alpha_courant_max: float = 0.0
+    residuals: dict[str, float] = field(default_factory=dict)
+    steps: int = 0
+    execution_time_s: float = 0.0
+    ended: bool = False
+
+    def feed(self, line: str) -> str | None:
+        """Update from one log line; return a divergence reason or ``None``."""
+        s = line.strip()
+        if m := _RE_TIME.match(s):
+            self.time = float(m.group(1))
+            self.steps += 1
+            return None
+        if m := _RE_CO.match(s):
+            self.courant_max = _num(m.group(2))
+        elif m := _RE_ACO.match(s):
+            self.alpha_courant_max = _num(m.group(2))
+        elif m := _RE_DT.match(s):
+            self.delta_t = _num(m.group(1))
+        elif m := _RE_RES.search(s):
+            self.residuals[m.group(1)] = _num(m.group(2))
+            if not math.isfinite(_num(m.group(3))):
+                return f"non-finite residual of {m.group(1)}"
+        elif m := _RE_EXEC.match(s):
+            self.execution_time_s = _num(m.group(1))
+        elif s == "End":
+            self.ended = True
+        if "FOAM FATAL" in s:
+            return "FOAM FATAL ERROR"
+        if s.startswith("#0") and "sigFpe" in s or s.startswith("Floating point exception"):
+            return "floating point exception (stack trace in the log)"
+        if (_RE_CO.match(s) or _RE_RES.search(s) or _RE_DT.match(s)) and _RE_NAN.search(s):
+            return "NaN or Inf in the solution"
+        return None
+
+
+def _num(text: str) -> float:
+    try:
+        return float(text.rstrip(","))
+    except ValueError:
+        return math.nan
+
+
+@dataclass
+class RunSummary:
+    """Outcome of :func:`run_solver`."""
+
+    application: str
+    case: Path
+    log_path: Path
+    n_procs: int
+    wall_time_s: float
+    state: LogState
+    stopped_early: bool
+
+
+ProgressFn = Callable[[LogState, float], None]
+StopFn = Callable[[LogState], bool]
+
+
+def run_solver(
+    case: str | Path,
+    application: str,
+    *,
+    n_procs: int = 1,
+    end_time: float | None = None,
+    progress: ProgressFn | None = None,
+    stop_when: StopFn | None = None,
+    max_courant: float = 25.0,
+    stock: bool = False,
+    timeout_s: float = 6 * 3600.0,
+) -> RunSummary:
+    """Run a solver in ``case`` (in parallel with MPI when ``n_procs > 1``), following its log.
+
+    Parameters
+    ----------
+    case
+        Case directory (decomposed already when ``n_procs > 1``).
+    application
+        Solver name, one of :data:`SOLVERS`.
+    n_procs
+        MPI ranks.
+    end_time
+        The case's endTime, for the progress display's ETA.
+    progress
+        Called after every time step with the log state and the ETA in seconds (NaN if unknown).
+    stop_when
+        Called after every time step; when it returns True the run is stopped (``stopAt
+        writeNow`` through controlDict) and :attr:`RunSummary.stopped_early` is set.
+    max_courant
+        A Courant number above this is treated as divergence.
+    stock
+        Use Debian's binary (tests only).
+
+    Raises
+    ------
+    FoamDivergenceError
+        On NaN, Courant explosion or a floating point exception; the solver is stopped and the
+        error carries the log excerpt.
+    FoamRunError
+        On any other failure (non-zero exit, FOAM FATAL ERROR).
+    """
+    case = Path(case)
+    exe = solver_executable(application, stock=stock)
+    cmd = [str(exe), "-case", str(case)]
+    if n_procs > 1:
+        mpirun = shutil.which("mpirun")
+        if mpirun is None:
+            raise FoamSetupError("mpirun not found: run `make setup` (Debian package openmpi-bin)")
+        cmd = [mpirun, "-np", str(n_procs), *cmd, "-parallel"]
+    log_path = case / f"log.{application}"
+    state = LogState()
+    tail: list[str] = []
+    t0 = time.monotonic()
+    last_step = (t0, 0.0)
+    reason: str | None = None
+    fatal_at: int | None = None
+    stopped = False
+    with open(log_path, "a") as log, subprocess.Popen(
+        cmd, env=foam_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        bufsize=1, start_new_session=True,
+    ) as proc:
+        assert proc.stdout is not None
+        try:
+            for line in proc.stdout:
+                log.write(line)
+                tail.append(line)
+                if len(tail) > 400:
+                    del tail[:200]
+                if fatal_at is not None:
+                    continue  # let the solver finish printing its fatal error and exit
+                step_before = state.steps
+                reason = state.feed(line)
+                if reason == "FOAM FATAL ERROR":
+                    fatal_at, reason = len(tail) - 1, None
+                    continue
+                if reason is None and state.courant_max > max_courant:
+                    reason = f"Courant number {state.courant_max:g} above {max_courant:g}"
+                if reason is not None:
+                    break
+                if state.steps != step_before and state.steps > 1:
+                    now = time.monotonic()
+                    eta = math.nan
+                    if end_time is not None and state.time > last_step[1]:
+                        rate = (state.time - 0.0) / max(now - t0, 1e-9)
+                        eta = (end_time - state.time) / rate if rate > 0 else math.nan
+                    last_step = (now, state.time)
+                    if progress is not None:
+                        progress(state, eta)
+                    if stop_when is not None and not stopped and stop_when(state):
+                        stopped = True
+                        _request_write_now(case)
+                if time.monotonic() - t0 > timeout_s:
+                    reason = f"timeout after {timeout_s:.0f} s"
+                    break
+        finally:
+            if reason is not None:
+                _kill(proc)
+            proc.wait()
+    wall = time.monotonic() - t0
+    if reason is not None:
+        raise FoamDivergenceError(
+            f"{application} diverged at t = {state.time:g} s (step {state.steps}): {reason}",
+            case, application, log_path, _excerpt(tail, 40),
+        )
+    if fatal_at is not None:
+        raise FoamRunError(
+            f"{application} stopped with a FOAM FATAL ERROR at t = {state.time:g} s",
+            case, application, log_path, "".join(tail[max(fatal_at - 10, 0):fatal_at + 30]).rstrip(),
+        )
+    if proc.returncode != 0 and not stopped:
+        raise FoamRunError(
+            f"{application} failed (exit {proc.returncode})", case, application, log_path,
+            _excerpt(tail, 40),
+        )
+    return RunSummary(application, case, log_path, n_procs, wall, state, stopped)
+
+
+def _kill(proc: subprocess.Popen) -> None:
+    try:
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait(timeout=10)
+    except (ProcessLookupError, subprocess.TimeoutExpired):
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+
+
+def _request_write_now(case: Path) -> None:
+    """Ask a running solver to write and stop (runTimeModifiable re-reads controlDict)."""
+    cd = case / "system" / "controlDict"
+    text = cd.read_text()
+    text = re.sub(r"^stopAt\s+\w+;", "stopAt          writeNow;", text, flags=re.M)
+    tmp = cd.with_suffix(".tmp")
+    tmp.write_text(text)
+    tmp.replace(cd)
+
+
+_RE_FIELD = re.compile(
+    r"internalField\s+(uniform\s+(\([^)]*\)|\S+)|nonuniform\s+List<(\w+)>\s*(\d+)\s*\()", re.S
+)
+
+
+def read_field(path: str | Path) -> np.ndarray:
+    """Internal field values of an ASCII OpenFOAM field file.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n,) for scalars or (n, 3) for vectors; a uniform field gives one row.
+    """
+    path = Path(path)
+    text = path.read_text()
+    m = _RE_FIELD.search(text)
+    if m is None:
+        raise FoamError(f"{path}: no ASCII internalField found")
+    if m.group(1).startswith("uniform"):
+        token = m.group(2)
+        vals = np.array(token.strip("()").split(), dtype=float)
+        return vals if vals.size > 1 else vals.reshape(1)
+    kind, n = m.group(3), int(m.group(4))
+    body = text[m.end():]
+    end = body.find("\n)")
+    numbers = np.array(body[:end].replace("(", " ").replace(")", " ").split(), dtype=float)
+    if kind == "scalar":
+        out = numbers
+    elif kind == "vector":
+        out = numbers.reshape(-1, 3)
+    else:
+        raise FoamError(f"{path}: field type List<{kind}> not supported")
+    if out.shape[0] != n:
+        raise FoamError(f"{path}: expected {n} values, read {out.shape[0]}")
+    return out
+
+
+def write_field_values(path: str | Path, values: np.ndarray) -> None:
+    """Replace the internal field of an ASCII scalar field file by ``values`` (non-uniform)."""
+    path = Path(path)
+    text = path.read_text()
+    body = "\n".join(f"{v:.12g}" for v in np.asarray(values, dtype=float))
+    new = f"internalField   nonuniform List<scalar> {len(values)}\n(\n{body}\n)\n;"
+    text, n = re.subn(r"internalField\s+uniform\s+[^;]+;", new, text, count=1)
+    if n != 1:
+        raise FoamError(f"{path}: expected a uniform internalField to replace")
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(text)
+    tmp.replace(path)
+
+
+def rotation_matrix(axis: Sequence[float], angle_deg: float) -> np.ndarray:
+    """Rotation matrix about ``axis`` by ``angle_deg`` (right hand), Rodrigues' formula."""
+    a = np.asarray(axis, dtype=float)
+    a = a / np.linalg.norm(a)
+    t = math.radians(angle_deg)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(t) * k + (1 - math.cos(t)) * (k @ k)
