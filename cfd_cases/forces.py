@@ -1,0 +1,84 @@
+"""Reading the ``forces`` function object's output (force.dat, moment.dat) of OpenFOAM v1912.
+
+Each file has lines ``time (total) (pressure) (viscous)`` with three components each. Restarted
+runs write a new time folder; the series are concatenated in time order, later folders winning
+where times overlap.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .foam import FoamError
+
+__all__ = ["ForceSeries", "read_forces"]
+
+
+@dataclass(frozen=True)
+class ForceSeries:
+    """Force and moment time series of one ``forces`` function object (SI units).
+
+    Attributes
+    ----------
+    time
+        Shape (n,).
+    force_total, force_pressure, force_viscous, moment_total, moment_pressure, moment_viscous
+        Shape (n, 3), in the global frame; moments about the object's CofR.
+    """
+
+    time: np.ndarray
+    force_total: np.ndarray
+    force_pressure: np.ndarray
+    force_viscous: np.ndarray
+    moment_total: np.ndarray
+    moment_pressure: np.ndarray
+    moment_viscous: np.ndarray
+
+
+def _read_dat(path: Path) -> np.ndarray:
+    rows = []
+    for line in path.read_text().splitlines():
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        nums = line.replace("(", " ").replace(")", " ").split()
+        try:
+            rows.append([float(x) for x in nums])
+        except ValueError as exc:
+            raise FoamError(f"{path}: unreadable line {line!r}") from exc
+    if not rows:
+        return np.empty((0, 10))
+    arr = np.array(rows)
+    if arr.shape[1] != 10:
+        raise FoamError(f"{path}: expected 10 columns (time, total, pressure, viscous), got {arr.shape[1]}")
+    return arr
+
+
+def _series(case: Path, name: str, file: str) -> np.ndarray:
+    root = case / "postProcessing" / name
+    if not root.is_dir():
+        raise FoamError(f"{root}: no output of function object '{name}' (did the solver run?)")
+    parts = []
+    for d in sorted((p for p in root.iterdir() if p.is_dir()), key=lambda p: float(p.name)):
+        f = d / file
+        if f.is_file():
+            parts.append(_read_dat(f))
+    if not parts:
+        raise FoamError(f"{root}: no {file} in any time folder")
+    arr = np.vstack(parts)
+    # keep the last occurrence of each time (restarts overwrite)
+    _, idx = np.unique(arr[::-1, 0], return_index=True)
+    keep = np.sort(len(arr) - 1 - idx)
+    return arr[keep]
+
+
+def read_forces(case: str | Path, name: str = "forces") -> ForceSeries:
+    """Read force.dat and moment.dat of function object ``name`` in ``case``."""
+    case = Path(case)
+    f = _series(case, name, "force.dat")
+    m = _series(case, name, "moment.dat")
+    n = min(len(f), len(m))
+    f, m = f[:n], m[:n]
+    return ForceSeries(f[:, 0], f[:, 1:4], f[:, 4:7], f[:, 7:10], m[:, 1:4], m[:, 4:7], m[:, 7:10])
