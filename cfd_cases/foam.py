@@ -36,6 +36,7 @@ __all__ = [
     "run_utility",
     "run_solver",
     "read_field",
+    "read_boundary_vectors",
     "write_field_values",
     "rotation_matrix",
 ]
@@ -420,13 +421,41 @@ def read_field(path: str | Path) -> np.ndarray:
     return out
 
 
-def write_field_values(path: str | Path, values: np.ndarray) -> None:
-    """Replace the internal field of an ASCII scalar field file by ``values`` (non-uniform)."""
+def read_boundary_vectors(path: str | Path) -> dict[str, np.ndarray]:
+    """Boundary values of an ASCII vector field file (e.g. the face centres in ``0/C``),
+    patch name -> (n, 3) array; patches with uniform or no values are left out."""
     path = Path(path)
     text = path.read_text()
-    body = "\n".join(f"{v:.12g}" for v in np.asarray(values, dtype=float))
-    new = f"internalField   nonuniform List<scalar> {len(values)}\n(\n{body}\n)\n;"
-    text, n = re.subn(r"internalField\s+uniform\s+[^;]+;", new, text, count=1)
+    start = text.find("boundaryField")
+    if start < 0:
+        raise FoamError(f"{path}: no boundaryField")
+    out: dict[str, np.ndarray] = {}
+    for m in re.finditer(r"\n\s{4}(\w+)\s*\n\s{4}\{.*?value\s+nonuniform\s+List<vector>\s*(\d+)\s*\(",
+                         text[start:], re.S):
+        name, n = m.group(1), int(m.group(2))
+        body = text[start + m.end():]
+        end = body.find("\n)")
+        vals = np.array(body[:end].replace("(", " ").replace(")", " ").split(), dtype=float).reshape(-1, 3)
+        if vals.shape[0] != n:
+            raise FoamError(f"{path}: patch {name}: expected {n} vectors, read {vals.shape[0]}")
+        out[name] = vals
+    return out
+
+
+def write_field_values(path: str | Path, values: np.ndarray) -> None:
+    """Replace the uniform internal field of an ASCII field file by ``values``: shape (n,) for a
+    scalar field, (n, 3) for a vector field."""
+    path = Path(path)
+    text = path.read_text()
+    v = np.asarray(values, dtype=float)
+    if v.ndim == 1:
+        body = "\n".join(f"{x:.12g}" for x in v)
+        kind = "scalar"
+    else:
+        body = "\n".join(f"({x:.12g} {y:.12g} {z:.12g})" for x, y, z in v)
+        kind = "vector"
+    new = f"internalField   nonuniform List<{kind}> {len(v)}\n(\n{body}\n)\n;"
+    text, n = re.subn(r"internalField\s+uniform\s+[^;]+;", lambda m: new, text, count=1)
     if n != 1:
         raise FoamError(f"{path}: expected a uniform internalField to replace")
     tmp = path.with_suffix(".tmp")

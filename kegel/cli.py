@@ -382,6 +382,10 @@ def _parser() -> argparse.ArgumentParser:
     common(lo)
     lo.set_defaults(func=_cmd_losses)
 
+    from .cfd_cases.cli import add_cfd_parser
+
+    add_cfd_parser(sub, common)
+
     for name, func, text in (("check", _cmd_check, "validate a scene file"), ("run", _cmd_run, "run a scene")):
         sp = sub.add_parser(name, help=text)
         sp.add_argument("scene", help="scene .toml file")
@@ -402,6 +406,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KegelInputError as exc:
         print(f"kegel: error: {exc}", file=sys.stderr)
         return 2
+    except RuntimeError as exc:
+        from .cfd_cases.foam import FoamError
+
+        if not isinstance(exc, FoamError):
+            raise
+        print(f"kegel: OpenFOAM error: {exc}", file=sys.stderr)
+        return 1
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -1,0 +1,243 @@
+"""``kegel cfd ...``: run, sweep, check-solvers, validate."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["add_cfd_parser"]
+
+
+def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str):
+    from kegel.data import load_bearing
+    from kegel.errors import KegelInputError
+    from kegel.scene import resolve_oil_level
+    from kegel.units import parse_quantity
+
+    from .geometry import MESH_LEVELS
+    from .run import CfdPoint
+
+    src = "command line"
+    bearing = load_bearing(args.bearing, source=src, key="--bearing")
+    speed = parse_quantity(speed_text, "speed", source=src, key="--speed")
+    if speed == 0.0:
+        raise KegelInputError(src, "--speed", speed_text, "a non-zero shaft speed")
+    T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
+    level = None if level_text == "flooded" else resolve_oil_level(level_text, bearing, source=src, key="--oil-level")
+    if level is not None and level <= 0.0:
+        raise KegelInputError(src, "--oil-level", level_text, "an oil level above 0 (or 'flooded')")
+    if args.mesh not in MESH_LEVELS:
+        raise KegelInputError(src, "--mesh", args.mesh, f"one of {', '.join(MESH_LEVELS)}")
+    if args.np < 1:
+        raise KegelInputError(src, "--np", args.np, "at least 1 process")
+    end = None
+    if getattr(args, "end_time", None):
+        end = parse_quantity(args.end_time, "time", source=src, key="--end-time")
+        if end <= 0:
+            raise KegelInputError(src, "--end-time", args.end_time, "a positive time")
+    return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
+                    mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
+                    max_iterations=args.max_iterations)
+
+
+def _case_name(point, level_text: str) -> str:
+    lvl = level_text.replace(" ", "")
+    return (f"{point.bearing}_{point.speed_rad_s * 30 / math.pi:.0f}rpm_{lvl}_"
+            f"{point.temperature_K - 273.15:.0f}C_{point.mesh}")
+
+
+def _liebrecht(point) -> dict[str, float]:
+    from kegel.correlations import hydraulic_torques
+    from kegel.data import load_bearing, load_lubricant, load_material
+    from kegel.geometry import derive_geometry
+    from kegel.lubricant import lubricant_state
+
+    bearing = load_bearing(point.bearing)
+    g = derive_geometry(bearing, load_material(point.material))
+    state = lubricant_state(load_lubricant(point.lubricant), point.temperature_K)
+    level = bearing.outer_diameter_m if point.oil_level_m is None else point.oil_level_m
+    t = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=point.speed_rad_s, oil_level_m=level)
+    return {"inner_ring_Nm": t.inner_ring_Nm, "outer_ring_Nm": t.outer_ring_Nm, "cage_Nm": t.cage_Nm,
+            "total_Nm": t.total_Nm}
+
+
+def _run_one(point, case: Path, args) -> dict[str, Any]:
+    from kegel.io import atomic_write_json
+
+    from .plots import plot_oil_distribution, plot_torque_history
+    from .run import run_case
+
+    res = run_case(point, case, progress=not args.quiet, log=lambda s: print(s, file=sys.stderr))
+    meta = json.loads((case / "kegel-case.json").read_text())
+    pictures = {"torque_history": str(plot_torque_history(case, res.window_s, case / "torque_history.png",
+                                                          steady_solver=point.flooded))}
+    if not point.flooded:
+        times = sorted((p for p in case.iterdir() if _is_time(p.name) and (p / "alpha.oil").is_file()),
+                       key=lambda p: float(p.name))
+        if times:
+            zc = float(np.mean([r["centre_m"][2] for r in meta["rollers"]]))
+            from kegel.data import load_bearing
+
+            R = 0.5 * load_bearing(point.bearing).outer_diameter_m
+            pictures["oil_distribution"] = str(plot_oil_distribution(case, times[-1], zc, case / "oil_distribution.png",
+                                                                     housing_radius_m=R))
+    lieb = _liebrecht(point)
+    data = json.loads((case / "results.json").read_text())
+    data["liebrecht_Nm"] = lieb
+    data["pictures"] = pictures
+    atomic_write_json(case / "results.json", data)
+    return data
+
+
+def _is_time(name: str) -> bool:
+    try:
+        return float(name) > 0
+    except ValueError:
+        return False
+
+
+def _cmd_run(args: argparse.Namespace) -> int:
+    point = _point_from_args(args, args.speed, args.oil_level)
+    case = Path(args.output) if args.output else Path("results") / "cfd" / _case_name(point, args.oil_level)
+    data = _run_one(point, case, args)
+    if args.format == "json":
+        print(json.dumps(data, indent=2))
+        return 0
+    t = data["torques_Nm"]
+    print(f"CFD {point.bearing}, {point.speed_rad_s * 30 / math.pi:g} rpm, oil level {args.oil_level}, "
+          f"{point.temperature_K - 273.15:g} degC, mesh {point.mesh} ({data['fidelity']['cells']} cells), "
+          f"{point.n_procs} core(s): {data['runtime_s']:.0f} s, steady: {data['steady']}")
+    print(f"{'body':<28}{'total':>12}{'pressure':>12}{'viscous':>12}   (torque about the axis, N m)")
+    for name in ("inner_ring", "outer_ring", "cage", "rollers_spin_sum"):
+        v = t[name]
+        print(f"{name:<28}{v['total']:>12.4g}{v['pressure']:>12.4g}{v['viscous']:>12.4g}")
+    print(f"{'rollers about the bearing axis':<28}{t['rollers_about_bearing_axis']['total']:>12.4g}")
+    print(f"hydraulic power loss {data['power_loss_W']:.4g} W = {data['loss_torque_at_shaft_Nm']:.4g} N m at the shaft;"
+          f" Liebrecht (Eq. 38-40): {data['liebrecht_Nm']['total_Nm']:.4g} N m")
+    print(f"results: {case / 'results.json'}")
+    for p in data["pictures"].values():
+        print(f"picture: {p}")
+    return 0
+
+
+def _cmd_sweep(args: argparse.Namespace) -> int:
+    from kegel.io import atomic_write_json, atomic_write_text
+
+    from .plots import plot_sweep
+
+    out = Path(args.output or "results/cfd/sweep")
+    rows = []
+    for level in args.oil_level or ["flooded"]:
+        for speed in args.speed or ["2000 rpm"]:
+            point = _point_from_args(args, speed, level)
+            case = out / _case_name(point, level)
+            data = _run_one(point, case, args)
+            rows.append({"oil_level": level, "speed_rpm": point.speed_rad_s * 30 / math.pi,
+                         "cfd_loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
+                         "cfd_inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
+                         "cfd_outer_ring_Nm": data["torques_Nm"]["outer_ring"]["total"],
+                         "liebrecht_total_Nm": data["liebrecht_Nm"]["total_Nm"],
+                         "runtime_s": data["runtime_s"], "cells": data["fidelity"]["cells"],
+                         "case": str(case)})
+    out.mkdir(parents=True, exist_ok=True)
+    atomic_write_json(out / "sweep.json", {"rows": rows})
+    header = "oil_level,speed_rpm,cfd_loss_torque_Nm,liebrecht_total_Nm,cfd_inner_ring_Nm,cfd_outer_ring_Nm,runtime_s,cells\n"
+    atomic_write_text(out / "sweep.csv", header + "".join(
+        f"{r['oil_level']},{r['speed_rpm']:.6g},{r['cfd_loss_torque_Nm']:.6g},{r['liebrecht_total_Nm']:.6g},"
+        f"{r['cfd_inner_ring_Nm']:.6g},{r['cfd_outer_ring_Nm']:.6g},{r['runtime_s']:.1f},{r['cells']}\n" for r in rows))
+    plot = plot_sweep(rows, out / "sweep.png", title=f"{args.bearing}, {args.temperature}, mesh {args.mesh}")
+    if args.format == "json":
+        print(json.dumps({"rows": rows, "plot": str(plot)}, indent=2))
+        return 0
+    print(f"{'oil level':<14}{'rpm':>8}{'CFD (N m)':>12}{'Liebrecht':>12}{'ratio':>8}{'runtime s':>11}")
+    for r in rows:
+        ratio = r["cfd_loss_torque_Nm"] / r["liebrecht_total_Nm"] if r["liebrecht_total_Nm"] else float("nan")
+        print(f"{r['oil_level']:<14}{r['speed_rpm']:>8.0f}{r['cfd_loss_torque_Nm']:>12.4g}"
+              f"{r['liebrecht_total_Nm']:>12.4g}{ratio:>8.2f}{r['runtime_s']:>11.0f}")
+    print(f"table: {out / 'sweep.csv'}\nplot: {plot}")
+    return 0
+
+
+def _cmd_check_solvers(args: argparse.Namespace) -> int:
+    from .checks import rotation_check
+    from .foam import SOLVERS
+
+    ok = True
+    rows = []
+    for s in SOLVERS:
+        for stock in ((False, True) if args.stock else (False,)):
+            r = rotation_check(s, stock=stock)
+            tol = 1e-4 if s == "interFoam" else 1e-8
+            passed = r.passed(tol)
+            ok &= passed or stock
+            rows.append({"solver": s, "binary": "Debian" if stock else "kegel rebuild",
+                         "velocity_error": r.velocity_error, "diverged": r.diverged, "passed": passed})
+    if args.format == "json":
+        print(json.dumps(rows, indent=2))
+    else:
+        print("rotation check: case rotated by 30 deg about z against the unrotated case")
+        for r in rows:
+            print(f"{r['solver']:<12}{r['binary']:<15}error {r['velocity_error']:.3g}"
+                  f"{'  diverged' if r['diverged'] else ''}  {'PASS' if r['passed'] else 'FAIL'}")
+    return 0 if ok else 1
+
+
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from .validation import taylor_couette
+
+    r = taylor_couette()
+    if args.format == "json":
+        from dataclasses import asdict
+
+        print(json.dumps(asdict(r), indent=2))
+    else:
+        print(f"Taylor-Couette (Re {r.reynolds:.0f}, {r.cells} cells): torque {r.torque_simulated_Nm:.6g} N m, "
+              f"analytic {r.torque_analytic_Nm:.6g} N m, error {100 * r.relative_error:+.3f} %")
+    return 0 if abs(r.relative_error) < 0.02 else 1
+
+
+def add_cfd_parser(sub, common) -> None:
+    """Add ``kegel cfd`` and its subcommands to the main parser."""
+    cfd = sub.add_parser("cfd", help="OpenFOAM cases of the bearing (run, sweep, checks)")
+    csub = cfd.add_subparsers(dest="cfd_command", required=True)
+
+    def point_args(sp, many: bool) -> None:
+        sp.add_argument("--bearing", default="32208", help="bearing designation (default 32208)")
+        sp.add_argument("--lubricant", default="FVA3")
+        sp.add_argument("--temperature", default="50 degC", help='oil temperature (default "50 degC")')
+        if many:
+            sp.add_argument("--speed", action="append", help='shaft speed (repeatable), e.g. "2000 rpm"')
+            sp.add_argument("--oil-level", action="append",
+                            help="flooded, none, half_roller, shaft_center or a length (repeatable)")
+        else:
+            sp.add_argument("--speed", default="2000 rpm", help='shaft speed (default "2000 rpm")')
+            sp.add_argument("--oil-level", default="flooded",
+                            help="flooded (single phase), half_roller, shaft_center or a length above the "
+                                 "lowest point of the outer diameter (default flooded)")
+        sp.add_argument("--mesh", default="tiny", help="mesh level: tiny, small, fine (default tiny)")
+        sp.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
+        sp.add_argument("--end-time", help='oil bath: simulated time limit (default 20 shaft revolutions)')
+        sp.add_argument("--max-iterations", type=int, default=2000, help="flooded: SIMPLE iteration limit")
+        sp.add_argument("--output", help="case folder (sweep: parent folder)")
+        sp.add_argument("--quiet", action="store_true", help="no progress lines")
+        common(sp)
+
+    r = csub.add_parser("run", help="prepare, mesh, run and post-process one case")
+    point_args(r, False)
+    r.set_defaults(func=_cmd_run)
+    s = csub.add_parser("sweep", help="run cases over speeds and oil levels, compare with Liebrecht")
+    point_args(s, True)
+    s.set_defaults(func=_cmd_sweep)
+    c = csub.add_parser("check-solvers", help="rotation check of the rebuilt OpenFOAM solvers")
+    c.add_argument("--stock", action="store_true", help="also check Debian's binaries (interFoam fails)")
+    common(c)
+    c.set_defaults(func=_cmd_check_solvers)
+    v = csub.add_parser("validate", help="Taylor-Couette torque through the CFD pipeline")
+    common(v)
+    v.set_defaults(func=_cmd_validate)

@@ -1,0 +1,448 @@
+"""Bearing CFD runs: prepare a case from the templates, mesh, run on N cores, follow, post-process.
+
+Modelling choices (and what they cost):
+
+- Frame: frozen rotor in the cage frame (MRF over the whole oil space at the cage speed). The
+  rollers and the cage stand still in that frame, so the geometry does not move and the run is
+  cheap and conserves the liquid volume (moving meshes with cyclicAMI lost about 2 % of it on
+  this OpenFOAM, see ../shared/notes). The cost: the rollers' positions relative to gravity (the
+  sump) are frozen, so the periodic passage of rollers through the oil bath is replaced by one
+  frozen arrangement (roller 0 at the bottom); torque fluctuations at the roller-pass frequency
+  are lost, and the mean can carry a bias of the order of the difference between arrangements
+  (half a roller pitch apart).
+- Walls carry their absolute velocities: rings and cage turn about z, each roller's orbit plus
+  spin is one rotation (see 0/U in the templates); speeds from kegel's pure-rolling kinematics
+  (:func:`kegel.tribology.cage_speed_rad_s`).
+- Laminar flow (gap Reynolds numbers of a few hundred at the design points).
+- Line contacts are opened to a gap (kegel.cfd_cases.geometry).
+
+Flooded: steady single-phase ``simpleFoam``. Oil bath: transient ``interFoam`` (oil/air, gravity
+``-y``), run until the torque is statistically steady.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .foam import (FoamError, LogState, read_boundary_vectors, read_field, run_solver, run_utility,
+                   write_field_values)
+from .forces import read_forces
+from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
+from .mesh import MeshQuality, check_mesh, gmsh_to_foam
+from .template import render_case
+
+__all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics"]
+
+INITIAL_ROTATION_FRACTION = 0.01
+AIR_DENSITY_KG_M3 = 1.2          # at 20-50 degC, 1 bar
+AIR_KINEMATIC_VISCOSITY_M2_S = 1.6e-5
+OIL_AIR_SURFACE_TENSION_N_M = 0.03  # mineral oil against air, typical 0.03 N/m (e.g. Totten, Handbook of Lubrication)
+
+
+@dataclass(frozen=True)
+class CfdPoint:
+    """One CFD operating point (SI units).
+
+    ``oil_level_m`` is the oil surface above the lowest point of the bearing's outer diameter
+    (horizontal shaft), ``None`` for a fully flooded bearing.
+    """
+
+    bearing: str
+    speed_rad_s: float
+    temperature_K: float
+    oil_level_m: float | None
+    mesh: str = "tiny"
+    n_procs: int = 2
+    lubricant: str = "FVA3"
+    material: str = "bearing_steel"
+    housing_clearance_m: float | None = None
+    end_time_s: float | None = None        # oil bath: simulated time limit (default: 20 shaft revolutions)
+    max_iterations: int = 2000            # flooded: SIMPLE iteration limit
+    steady_tolerance: float = 0.02         # relative change of the windowed mean torque
+
+    @property
+    def flooded(self) -> bool:
+        return self.oil_level_m is None
+
+    def validate(self) -> None:
+        if self.mesh not in MESH_LEVELS:
+            raise ValueError(f"mesh = {self.mesh!r}: expected one of {', '.join(MESH_LEVELS)}")
+        if self.n_procs < 1:
+            raise ValueError(f"n_procs = {self.n_procs}: expected at least 1")
+        if self.speed_rad_s == 0.0:
+            raise ValueError("speed = 0: expected a turning shaft")
+
+
+def kinematics(g, omega_i: float) -> dict[str, float]:
+    """Cage speed and roller spin (relative to the cage, about the roller axis small -> large end)
+    of apex-matched pure rolling with the outer ring fixed."""
+    from kegel.tribology import cage_speed_rad_s
+
+    omega_c = cage_speed_rad_s(g, omega_i)
+    omega_s = -(omega_i - omega_c) * g.inner_raceway_diameter_mid_m / g.roller_mean_diameter_m
+    return {"inner_ring_rad_s": omega_i, "cage_rad_s": omega_c, "roller_spin_rad_s": omega_s}
+
+
+def roller_wall_rotation(cg: CfdGeometry, k: int, omega_c: float, omega_s: float) -> dict[str, Any]:
+    """Roller k's absolute wall motion as one rotation: ``omega`` about ``axis`` through ``origin``.
+
+    The motion is ``v(r) = omega_c e_z x r + omega_s a x (r - c)``. With ``w = omega_c e_z +
+    omega_s a`` and ``b = omega_s a x c`` (perpendicular to ``w`` because ``a``, ``e_z`` and
+    ``c`` lie in one axial plane), ``v = w x (r - o)`` with ``o = (b x w) / |w|^2``.
+    """
+    c, a = cg.roller_centre_and_axis(k)
+    w = omega_c * np.array([0.0, 0.0, 1.0]) + omega_s * a
+    b = omega_s * np.cross(a, c)
+    o = np.cross(b, w) / float(np.dot(w, w))
+    mag = float(np.linalg.norm(w))
+    return {"name": roller_name(k), "origin": o, "axis": w / mag, "omega": mag, "centre": c,
+            "roller_axis": a}
+
+
+def _bodies(cg: CfdGeometry) -> list[dict[str, Any]]:
+    bodies = [{"name": n, "patches": [n], "origin": np.zeros(3)}
+              for n in ("inner_ring", "outer_ring", "cage", "shaft", "housing")]
+    for k in range(cg.roller_count):
+        c, _ = cg.roller_centre_and_axis(k)
+        bodies.append({"name": roller_name(k), "patches": [roller_name(k)], "origin": c})
+    return bodies
+
+
+def _load(point: CfdPoint):
+    from kegel.data import load_bearing, load_lubricant, load_material
+    from kegel.geometry import derive_geometry
+    from kegel.lubricant import lubricant_state
+
+    bearing = load_bearing(point.bearing)
+    g = derive_geometry(bearing, load_material(point.material))
+    lub = lubricant_state(load_lubricant(point.lubricant), point.temperature_K)
+    return bearing, g, lub
+
+
+def _point_json(point: CfdPoint) -> dict[str, Any]:
+    d = asdict(point)
+    d["speed_rpm"] = point.speed_rad_s * 30.0 / math.pi
+    d["temperature_degC"] = point.temperature_K - 273.15
+    return d
+
+
+def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None] = print) -> Path:
+    """Create (or reuse, for a resumed run) the case folder of ``point``: templates, mesh,
+    initial oil distribution, decomposition.
+
+    A case that already holds ``kegel-case.json`` for the same point is reused as it is (the
+    solver then starts from its latest time); for another point it is an error.
+    """
+    point.validate()
+    case_dir = Path(case_dir)
+    meta_path = case_dir / "kegel-case.json"
+    if meta_path.is_file():
+        meta = json.loads(meta_path.read_text())
+        if meta.get("point") != _point_json(point):
+            raise FoamError(f"{case_dir} holds a case of another point ({meta_path}); choose another folder")
+        log(f"cfd: resuming the case in {case_dir}")
+        return case_dir
+    bearing, g, lub = _load(point)
+    cg = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m)
+    kin = kinematics(g, point.speed_rad_s)
+    rollers = [roller_wall_rotation(cg, k, kin["cage_rad_s"], kin["roller_spin_rad_s"])
+               for k in range(cg.roller_count)]
+    patch_names = ["inner_ring", "shaft", "outer_ring", "housing", "cage", *[r["name"] for r in rollers]]
+    # pressure reference: in the side chamber at the top (air in an oil bath)
+    r_mid = 0.5 * (cg.shaft_radius_m + cg.housing_radius_m)
+    p_ref = np.array([0.0, r_mid, 0.5 * cg.z_min_m])
+    omega_i = point.speed_rad_s
+    if point.flooded:
+        template = "bearing_flooded"
+        params = {"n_iterations": point.max_iterations, "write_interval": 100}
+    else:
+        template = "bearing_oil_bath"
+        rev = 2 * math.pi / abs(omega_i)
+        end = point.end_time_s if point.end_time_s is not None else 20 * rev
+        y_level = -cg.housing_radius_m + point.oil_level_m
+        params = {"end_time": end, "write_interval_s": max(end / 20, rev), "y_level": y_level,
+                  "air_density_kg_m3": AIR_DENSITY_KG_M3, "air_nu_m2_s": AIR_KINEMATIC_VISCOSITY_M2_S,
+                  "sigma_N_m": OIL_AIR_SURFACE_TENSION_N_M,
+                  "box_min": (-1.0, -1.0, -1.0), "box_max": (1.0, y_level, 1.0),
+                  "first_delta_t": min(1e-5, rev / 2000)}
+    params.update({
+        "patch_names": patch_names, "rollers": rollers, "bodies": _bodies(cg),
+        "inner_omega_rad_s": omega_i, "cage_omega_rad_s": kin["cage_rad_s"],
+        "density_kg_m3": lub.density_kg_m3, "kinematic_viscosity_m2_s": lub.kinematic_viscosity_m2_s,
+        "p_ref_point": p_ref, "n_procs": point.n_procs,
+    })
+    tmp = case_dir.with_name(case_dir.name + ".preparing")
+    render_case(template, tmp, params, overwrite=True)
+    t0 = time.monotonic()
+    log(f"cfd: meshing {bearing.designation} at level '{point.mesh}' (gmsh)")
+    types = build_mesh(cg, point.mesh, tmp / "bearing.msh")
+    gmsh_to_foam(tmp, tmp / "bearing.msh", types)
+    (tmp / "bearing.msh").unlink()
+    quality = check_mesh(tmp)
+    mesh_s = time.monotonic() - t0
+    _write_wall_velocities(tmp, kin["cage_rad_s"], rollers)
+    log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
+        f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
+    if not point.flooded:
+        run_utility(tmp, "setFields")
+    if point.n_procs > 1:
+        run_utility(tmp, "decomposePar", "-force")
+    meta = {"point": _point_json(point), "template": template, "kinematics": kin,
+            "mesh": asdict(quality), "mesh_time_s": mesh_s,
+            "lubricant": lub.as_dict(),
+            "geometry": {"gap_m": cg.gap_m, "housing_clearance_m": cg.housing_clearance_m,
+                         "z_min_m": cg.z_min_m, "z_max_m": cg.z_max_m},
+            "rollers": [{"name": r["name"], "centre_m": r["centre"].tolist(), "axis": r["roller_axis"].tolist(),
+                         "wall_rotation_origin_m": r["origin"].tolist(), "wall_rotation_axis": r["axis"].tolist(),
+                         "wall_rotation_rad_s": r["omega"]} for r in rollers]}
+    (tmp / "kegel-case.json").write_text(json.dumps(meta, indent=2))
+    if case_dir.exists():
+        shutil.rmtree(case_dir)
+    tmp.rename(case_dir)
+    return case_dir
+
+
+def _write_wall_velocities(case: Path, omega_c: float, rollers: list[dict[str, Any]]) -> None:
+    """Rigid-body velocities of the cage and roller walls at their face centres (see 0/U)."""
+    run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0", log_name="writeCellCentres")
+    centres = read_boundary_vectors(case / "0" / "C")
+    cells = read_field(case / "0" / "C")
+    np.save(case / "cell_centres.npy", cells)  # for the oil pictures
+    # Initial oil velocity: 1 % of the cage's rigid rotation. The wall fluxes of the moving cage
+    # and rollers balance only to round-off, and v1912's CorrectPhi/adjustPhi judges that
+    # imbalance relative to the internal flux, which is zero for oil at rest (fatal error).
+    u0 = INITIAL_ROTATION_FRACTION * omega_c * np.cross(np.array([0.0, 0.0, 1.0]), cells)
+    write_field_values(case / "0" / "U", u0)
+    for f in ("C", "Cx", "Cy", "Cz"):
+        (case / "0" / f).unlink(missing_ok=True)
+    folder = case / "0" / "wallVelocity"
+    folder.mkdir(exist_ok=True)
+    ez = np.array([0.0, 0.0, 1.0])
+    motions = {"cage": (omega_c * ez, np.zeros(3))}
+    for r in rollers:
+        motions[r["name"]] = (r["omega"] * r["axis"], r["origin"])
+    for name, (w, o) in motions.items():
+        if name not in centres:
+            raise FoamError(f"{case}/0/C: no face centres of patch {name}")
+        u = np.cross(w, centres[name] - o)
+        rows = "\n".join(f"({x:.12g} {y:.12g} {z:.12g})" for x, y, z in u)
+        (folder / name).write_text(f"value nonuniform List<vector> {len(u)}\n(\n{rows}\n);\n")
+
+
+@dataclass
+class CfdResult:
+    """What :func:`run_case` measured (SI)."""
+
+    case: Path
+    point: dict[str, Any]
+    torques_Nm: dict[str, dict[str, float]]
+    rollers: list[dict[str, Any]]
+    cage: dict[str, Any]
+    power_loss_W: float
+    loss_torque_at_shaft_Nm: float
+    window_s: tuple[float, float]
+    steady: bool
+    liquid_volume: dict[str, list[float]] = field(default_factory=dict)
+    runtime_s: float = 0.0
+    cells: int = 0
+
+
+class _Progress:
+    """One status line about every ``every_s`` seconds: time, step, dt, Courant, residuals, ETA."""
+
+    def __init__(self, every_s: float = 5.0, stream=sys.stderr):
+        self.every_s = every_s
+        self.stream = stream
+        self.last = 0.0
+
+    def __call__(self, st: LogState, eta: float) -> None:
+        now = time.monotonic()
+        if now - self.last < self.every_s:
+            return
+        self.last = now
+        res = " ".join(f"{k} {v:.1e}" for k, v in list(st.residuals.items())[:4])
+        eta_txt = "?" if not math.isfinite(eta) else f"{eta / 60:.1f} min"
+        print(f"cfd: t = {st.time:.6g} s  step {st.steps}  dt {st.delta_t:.2e}  Co {st.courant_max:.2f}  "
+              f"{res}  ETA {eta_txt}", file=self.stream, flush=True)
+
+
+class _SteadyMonitor:
+    """Stops a run when the inner-ring torque is (statistically) steady.
+
+    Flooded (steady solver): the torque of the last 10 % of iterations changes by less than the
+    tolerance and at least 200 iterations ran. Oil bath: the means over the last two windows of
+    one cage revolution each differ by less than the tolerance, after at least four windows.
+    """
+
+    def __init__(self, case: Path, flooded: bool, window_s: float, tol: float):
+        self.case, self.flooded, self.window_s, self.tol = case, flooded, window_s, tol
+        self.last_check = 0.0
+        self.window: tuple[float, float] | None = None
+
+    def __call__(self, st: LogState) -> bool:
+        now = time.monotonic()
+        if now - self.last_check < 3.0:
+            return False
+        self.last_check = now
+        try:
+            f = read_forces(self.case, "forces_inner_ring")
+        except FoamError:
+            return False
+        t, m = f.time, f.moment_total[:, 2]
+        if len(t) < 20:
+            return False
+        if self.flooded:
+            if t[-1] < 200:
+                return False
+            k = max(int(0.1 * len(t)), 5)
+            seg = m[-k:]
+            change = (seg.max() - seg.min()) / max(abs(seg.mean()), 1e-300)
+            if change < self.tol * 0.25:
+                self.window = (float(t[-k]), float(t[-1]))
+                return True
+            return False
+        w = self.window_s
+        if t[-1] < 4 * w:
+            return False
+        last = m[t > t[-1] - w].mean()
+        prev = m[(t > t[-1] - 2 * w) & (t <= t[-1] - w)].mean()
+        if abs(last - prev) <= self.tol * max(abs(last), 1e-300):
+            self.window = (float(t[-1] - 2 * w), float(t[-1]))
+            return True
+        return False
+
+
+def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None] = print,
+             progress: bool = True) -> CfdResult:
+    """Prepare (or resume) and run the case of ``point``; write ``results.json`` into it."""
+    from kegel.io import atomic_write_json, provenance
+
+    case = prepare_case(point, case_dir, log=log)
+    meta = json.loads((case / "kegel-case.json").read_text())
+    kin = meta["kinematics"]
+    solver = "simpleFoam" if point.flooded else "interFoam"
+    cage_rev = 2 * math.pi / abs(kin["cage_rad_s"])
+    monitor = _SteadyMonitor(case, point.flooded, cage_rev, point.steady_tolerance)
+    end = None if point.flooded else float(_controldict_value(case, "endTime"))
+    log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
+    t0 = time.monotonic()
+    summary = run_solver(case, solver, n_procs=point.n_procs, end_time=end,
+                         progress=_Progress() if progress else None, stop_when=monitor,
+                         max_courant=25.0 if not point.flooded else 1e30)
+    runtime = time.monotonic() - t0
+    if point.n_procs > 1:
+        run_utility(case, "reconstructPar", "-latestTime")
+    result = _postprocess(case, point, meta, monitor.window, summary.stopped_early or summary.state.ended)
+    result.runtime_s = runtime + meta.get("runtime_before_s", 0.0)
+    meta["runtime_before_s"] = result.runtime_s
+    (case / "kegel-case.json").write_text(json.dumps(meta, indent=2))
+    out = {"provenance": provenance(), "fidelity": {"mesh": point.mesh, "cells": result.cells,
+                                                    "solver": solver, "n_procs": point.n_procs},
+           "point": result.point, "kinematics": kin, "runtime_s": result.runtime_s,
+           "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,
+           "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
+           "averaging_window": list(result.window_s), "steady": result.steady,
+           "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
+           "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
+           "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
+    atomic_write_json(case / "results.json", out)
+    return result
+
+
+def _controldict_value(case: Path, key: str) -> str:
+    import re
+
+    m = re.search(rf"^{key}\s+([^;]+);", (case / "system" / "controlDict").read_text(), re.M)
+    if m is None:
+        raise FoamError(f"{case}/system/controlDict: no {key}")
+    return m.group(1).strip()
+
+
+def _postprocess(case: Path, point: CfdPoint, meta: dict, window, ended: bool) -> CfdResult:
+    kin = meta["kinematics"]
+    omega_i, omega_c, omega_s = kin["inner_ring_rad_s"], kin["cage_rad_s"], kin["roller_spin_rad_s"]
+    f_ir = read_forces(case, "forces_inner_ring")
+    t = f_ir.time
+    if window is None:
+        # not detected steady: average over the last 10 % (flooded) or the last cage revolution
+        span = 0.1 * (t[-1] - t[0]) if point.flooded else 2 * math.pi / abs(omega_c)
+        window = (float(max(t[-1] - span, t[0])), float(t[-1]))
+        steady = False
+    else:
+        steady = True
+
+    def mean(series: np.ndarray, times: np.ndarray) -> np.ndarray:
+        sel = (times >= window[0]) & (times <= window[1])
+        if not sel.any():
+            sel = times == times[-1]
+        return series[sel].mean(axis=0)
+
+    torques = {}
+    power = 0.0
+    for name in ("inner_ring", "outer_ring", "cage", "shaft", "housing"):
+        f = read_forces(case, f"forces_{name}")
+        mz = {"total": float(mean(f.moment_total[:, 2], f.time)),
+              "pressure": float(mean(f.moment_pressure[:, 2], f.time)),
+              "viscous": float(mean(f.moment_viscous[:, 2], f.time))}
+        torques[name] = mz
+        w = {"inner_ring": omega_i, "shaft": omega_i, "cage": omega_c}.get(name, 0.0)
+        power -= mz["total"] * w
+    rollers = []
+    spin_sum = {"total": 0.0, "pressure": 0.0, "viscous": 0.0}
+    ez = np.array([0.0, 0.0, 1.0])
+    for r in meta["rollers"]:
+        f = read_forces(case, f"forces_{r['name']}")
+        F = mean(f.force_total, f.time)
+        M = mean(f.moment_total, f.time)
+        a = np.array(r["axis"])
+        c = np.array(r["centre_m"])
+        v_c = omega_c * np.cross(ez, c)
+        w_abs = omega_c * ez + omega_s * a
+        p_k = float(F @ v_c + M @ w_abs)
+        power -= p_k
+        spin = {"total": float(M @ a), "pressure": float(mean(f.moment_pressure, f.time) @ a),
+                "viscous": float(mean(f.moment_viscous, f.time) @ a)}
+        for k in spin_sum:
+            spin_sum[k] += spin[k]
+        # the orbiting drag of the roller: its force's moment about the bearing axis (plus its own z moment)
+        orbit_mz = float(np.cross(c, F)[2] + M[2])
+        rollers.append({"name": r["name"], "force_N": F.tolist(), "moment_about_centre_Nm": M.tolist(),
+                        "spin_torque_Nm": spin, "moment_about_bearing_axis_Nm": orbit_mz,
+                        "power_W": -p_k})
+    torques["rollers_about_bearing_axis"] = {"total": float(sum(r["moment_about_bearing_axis_Nm"] for r in rollers))}
+    torques["rollers_spin_sum"] = spin_sum
+    f_cage = read_forces(case, "forces_cage")
+    cage = {"force_N": mean(f_cage.force_total, f_cage.time).tolist(),
+            "moment_Nm": mean(f_cage.moment_total, f_cage.time).tolist()}
+    volume = {}
+    vol_file = case / "postProcessing" / "liquidVolume"
+    if vol_file.is_dir():
+        volume = _read_liquid_volume(vol_file)
+    cells = int(meta["mesh"]["cells"])
+    return CfdResult(case=case, point=meta["point"], torques_Nm=torques, rollers=rollers, cage=cage,
+                     power_loss_W=power, loss_torque_at_shaft_Nm=power / abs(omega_i),
+                     window_s=window, steady=steady, liquid_volume=volume, cells=cells)
+
+
+def _read_liquid_volume(root: Path) -> dict[str, list[float]]:
+    times, vols = [], []
+    for d in sorted((p for p in root.iterdir() if p.is_dir()), key=lambda p: float(p.name)):
+        for f in d.glob("*.dat"):
+            for line in f.read_text().splitlines():
+                if line.startswith("#") or not line.strip():
+                    continue
+                parts = line.split()
+                times.append(float(parts[0]))
+                vols.append(float(parts[1]))
+    order = np.argsort(times)
+    return {"time_s": [times[i] for i in order], "volume_m3": [vols[i] for i in order]}

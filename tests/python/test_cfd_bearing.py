@@ -1,0 +1,97 @@
+"""The bearing CFD cases: geometry, kinematics, mesh and short runs of both templates (32208, tiny)."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from kegel.cfd_cases.geometry import build_mesh, cfd_geometry, roller_name
+from kegel.cfd_cases.mesh import check_mesh, gmsh_to_foam
+from kegel.cfd_cases.run import CfdPoint, kinematics, roller_wall_rotation, run_case
+from kegel.cfd_cases.template import render_case
+from kegel.data import load_bearing, load_material
+from kegel.geometry import derive_geometry
+
+from conftest import run_kegel
+
+
+@pytest.fixture(scope="module")
+def g32208():
+    return derive_geometry(load_bearing("32208"), load_material("bearing_steel"))
+
+
+def test_cfd_geometry_is_derived_from_the_bearing_data(g32208):
+    cg = cfd_geometry(g32208)
+    assert cg.roller_count == 17
+    assert cg.housing_radius_m == pytest.approx(0.040)
+    assert cg.shaft_radius_m == pytest.approx(0.020)
+    assert cg.gap_m == pytest.approx(0.08 * g32208.roller_mean_diameter_m)
+    # shrunk rollers keep the gap to both raceways: distance from the roller axis to the outer
+    # raceway line at mid-length is D_w/2 (line contact); the CFD roller radius there is D_w/2 - g
+    mid = 0.5 * (cg.roller_radii_m[0] + cg.roller_radii_m[1])
+    assert mid == pytest.approx(0.5 * g32208.roller_mean_diameter_m - cg.gap_m, rel=1e-9)
+    c0, a0 = cg.roller_centre_and_axis(0)
+    assert c0[1] < 0 and abs(c0[0]) < 1e-12  # roller 0 at the bottom
+    assert np.linalg.norm(a0) == pytest.approx(1.0)
+
+
+def test_housing_clearance_must_be_positive(g32208):
+    with pytest.raises(ValueError, match="housing_clearance_m"):
+        cfd_geometry(g32208, housing_clearance_m=0.0)
+    with pytest.raises(ValueError, match="housing walls"):
+        cfd_geometry(g32208, housing_clearance_m=1e-4)
+
+
+def test_pure_rolling_kinematics(g32208):
+    w = 2000 * math.pi / 30
+    k = kinematics(g32208, w)
+    # no slip at the outer raceway: roller surface speed relative to the cage equals the cup's
+    u_roller = -k["roller_spin_rad_s"] * 0.5 * g32208.roller_mean_diameter_m
+    u_cup = k["cage_rad_s"] * 0.5 * g32208.outer_raceway_diameter_mid_m
+    assert u_roller == pytest.approx(u_cup, rel=1e-12)
+    assert 0 < k["cage_rad_s"] < w
+
+
+@pytest.mark.parametrize("k", [0, 5])
+def test_roller_wall_motion_is_orbit_plus_spin(g32208, k):
+    cg = cfd_geometry(g32208)
+    wc, ws = 80.0, -500.0
+    r = roller_wall_rotation(cg, k, wc, ws)
+    c, a = cg.roller_centre_and_axis(k)
+    ez = np.array([0.0, 0.0, 1.0])
+    rng = np.random.default_rng(k)
+    for p in c + 0.01 * rng.standard_normal((20, 3)):
+        expected = wc * np.cross(ez, p) + ws * np.cross(a, p - c)
+        got = r["omega"] * np.cross(r["axis"], p - r["origin"])
+        assert np.allclose(got, expected, atol=1e-12 * np.linalg.norm(expected) + 1e-14)
+
+
+@pytest.mark.openfoam
+def test_tiny_mesh_is_clean_and_has_every_patch(g32208, tmp_path):
+    cg = cfd_geometry(g32208)
+    case = render_case("check_cavity", tmp_path / "m", {"n_cells": 2, "delta_t": 1, "end_time": 1,
+                                                          "n_steps": 1, "solver": "simpleFoam", "steady": True,
+                                                          "lid_velocity": (0, 0, 0)})
+    types = build_mesh(cg, "tiny", tmp_path / "b.msh")
+    assert set(types) == {"inner_ring", "shaft", "outer_ring", "housing", "cage",
+                          *[roller_name(k) for k in range(17)]}
+    gmsh_to_foam(case, tmp_path / "b.msh", types)
+    q = check_mesh(case)
+    assert q.ok and 20_000 < q.cells < 200_000
+    assert q.max_non_orthogonality_deg < 75
+
+
+def _bad(*args):
+    res = run_kegel("cfd", "run", *args)
+    assert res.returncode == 2, res.stderr
+    return res.stderr
+
+
+def test_cfd_run_rejects_bad_input():
+    assert "--mesh" in _bad("--mesh", "huge") and "tiny" in _bad("--mesh", "huge")
+    assert "--oil-level" in _bad("--oil-level", "90 mm")
+    assert "--speed" in _bad("--speed", "0 rpm")
+    assert "--np" in _bad("--np", "0")
