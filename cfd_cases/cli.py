@@ -41,9 +41,14 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         end = parse_quantity(args.end_time, "time", source=src, key="--end-time")
         if end <= 0:
             raise KegelInputError(src, "--end-time", args.end_time, "a positive time")
+    wall = None
+    if getattr(args, "max_wall_time", None):
+        wall = parse_quantity(args.max_wall_time, "time", source=src, key="--max-wall-time")
+        if wall <= 0:
+            raise KegelInputError(src, "--max-wall-time", args.max_wall_time, "a positive time")
     return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
                     mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
-                    max_iterations=args.max_iterations)
+                    max_iterations=args.max_iterations, max_wall_time_s=wall)
 
 
 def _case_name(point, level_text: str) -> str:
@@ -189,17 +194,24 @@ def _cmd_check_solvers(args: argparse.Namespace) -> int:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from .validation import taylor_couette
+    from dataclasses import asdict
 
-    r = taylor_couette()
+    from .validation import rotating_tank, taylor_couette
+
+    tc = taylor_couette()
+    tank = rotating_tank()
+    ok_tc = abs(tc.relative_error) < 0.02
+    ok_tank = tank.max_height_error_m < 0.25 * tank.cell_height_m and abs(tank.volume_change) < 1e-4
     if args.format == "json":
-        from dataclasses import asdict
-
-        print(json.dumps(asdict(r), indent=2))
+        print(json.dumps({"taylor_couette": asdict(tc), "rotating_tank": asdict(tank)}, indent=2))
     else:
-        print(f"Taylor-Couette (Re {r.reynolds:.0f}, {r.cells} cells): torque {r.torque_simulated_Nm:.6g} N m, "
-              f"analytic {r.torque_analytic_Nm:.6g} N m, error {100 * r.relative_error:+.3f} %")
-    return 0 if abs(r.relative_error) < 0.02 else 1
+        print(f"Taylor-Couette (Re {tc.reynolds:.0f}, {tc.cells} cells): torque {tc.torque_simulated_Nm:.6g} N m, "
+              f"analytic {tc.torque_analytic_Nm:.6g} N m, error {100 * tc.relative_error:+.3f} % "
+              f"({'PASS' if ok_tc else 'FAIL'}, limit 2 %)")
+        print(f"rotating tank (VOF, {tank.cells} cells): free surface within {tank.max_height_error_m * 1e3:.3f} mm "
+              f"of the paraboloid (cell height {tank.cell_height_m * 1e3:.1f} mm), oil volume change "
+              f"{tank.volume_change:.2e} ({'PASS' if ok_tank else 'FAIL'})")
+    return 0 if ok_tc and ok_tank else 1
 
 
 def add_cfd_parser(sub, common) -> None:
@@ -224,6 +236,7 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
         sp.add_argument("--end-time", help='oil bath: simulated time limit (default 20 shaft revolutions)')
         sp.add_argument("--max-iterations", type=int, default=2000, help="flooded: SIMPLE iteration limit")
+        sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")
         common(sp)
@@ -238,6 +251,6 @@ def add_cfd_parser(sub, common) -> None:
     c.add_argument("--stock", action="store_true", help="also check Debian's binaries (interFoam fails)")
     common(c)
     c.set_defaults(func=_cmd_check_solvers)
-    v = csub.add_parser("validate", help="Taylor-Couette torque through the CFD pipeline")
+    v = csub.add_parser("validate", help="Taylor-Couette torque and rotating-tank free surface through the CFD pipeline")
     common(v)
     v.set_defaults(func=_cmd_validate)

@@ -16,8 +16,8 @@ Solids (cut out of the fluid):
   rib), bore ``d/2`` on the shaft;
 - rollers: truncated cones on their axes, **shrunk by the gap g** on the radius and shortened by
   ``g`` at each end. A CFD mesh cannot resolve the line contacts (zero film thickness at this
-  scale); the gap ``g = GAP_RATIO * D_w`` (0.08 D_w) keeps two to four cells between roller and
-  raceway at the ``small`` level. The flat large end replaces the spherical one (R_e = 139 mm
+  scale); the gap ``g = GAP_RATIO * D_w`` (0.08 D_w, 0.8 mm for the 32208) holds one to two
+  tetrahedra at the ``small`` level and about one at ``tiny``. The flat large end replaces the spherical one (R_e = 139 mm
   for the 32208: 0.1 um of crown over the end face);
 - cage: a pressed-steel window cage as a conical shell parallel to the roller axes, its
   mid-surface ``CAGE_OFFSET_RATIO * D_w`` outside the roller axes (toward the cup, as in
@@ -57,7 +57,7 @@ HOUSING_CLEARANCE_RATIO = 0.25
 #: Mesh levels: cell size far from walls and at the walls of the narrow gaps, as fractions of D_w.
 MESH_LEVELS = {
     "tiny": {"size_max": 0.45, "size_gap": 0.16},
-    "small": {"size_max": 0.22, "size_gap": 0.06},
+    "small": {"size_max": 0.30, "size_gap": 0.09},
     "fine": {"size_max": 0.10, "size_gap": 0.025},
 }
 
@@ -202,13 +202,25 @@ def _revolve_section(occ, section) -> int:
 
 
 def _cone_along(occ, cg: CfdGeometry, k: int, small_end, length, radii) -> int:
+    """Truncated cone of roller k, built along +z and turned into place so that the seam of its
+    lateral surface faces the inner ring: a seam crossing the cage's pocket edge leaves
+    sliver cells there."""
+    from scipy.spatial.transform import Rotation
+
     phi = cg.roller_azimuth_rad(k)
     er = np.array([math.cos(phi), math.sin(phi), 0.0])
     ez = np.array([0.0, 0.0, 1.0])
     a = cg.roller_axis[0] * ez + cg.roller_axis[1] * er
+    n_in = -(cg.roller_axis[0] * er - cg.roller_axis[1] * ez)   # normal toward the inner ring
+    frame = np.column_stack([n_in, np.cross(a, n_in), a])        # local x (seam), y, z (axis)
     p = small_end[0] * ez + small_end[1] * er
-    d = a * length
-    return occ.addCone(*p, *d, radii[0], radii[1])
+    tag = occ.addCone(0.0, 0.0, 0.0, 0.0, 0.0, length, radii[0], radii[1])
+    rotvec = Rotation.from_matrix(frame).as_rotvec()
+    angle = float(np.linalg.norm(rotvec))
+    if angle > 1e-12:
+        occ.rotate([(3, tag)], 0.0, 0.0, 0.0, *(rotvec / angle), angle)
+    occ.translate([(3, tag)], *p)
+    return tag
 
 
 def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: int = 2) -> dict[str, str]:
@@ -270,8 +282,9 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
         gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 12)
         gmsh.option.setNumber("Mesh.MeshSizeMax", size_max)
         gmsh.option.setNumber("Mesh.MeshSizeMin", 0.5 * size_gap)
-        gmsh.option.setNumber("Mesh.Algorithm", 6)
-        gmsh.option.setNumber("Mesh.Algorithm3D", 10)  # HXT, parallel
+        gmsh.option.setNumber("Mesh.Algorithm", 1)  # MeshAdapt: no sliver triangles on the trimmed cage faces
+        gmsh.option.setNumber("Mesh.Algorithm3D", 1)  # Delaunay: fewer slivers than HXT here
+        gmsh.option.setNumber("Mesh.OptimizeThreshold", 0.45)
         gmsh.option.setNumber("Mesh.Optimize", 1)
         gmsh.option.setNumber("Mesh.OptimizeNetgen", 1)
         gmsh.model.mesh.generate(3)

@@ -118,7 +118,7 @@ def check_mesh(case: str | Path, *, require_ok: bool = True) -> MeshQuality:
 
     def grab(pattern: str, cast=float, default=float("nan")):
         m = re.search(pattern, out, re.M)
-        return cast(m.group(1)) if m else default
+        return cast(m.group(1).rstrip(",")) if m else default
 
     failed = tuple(l.strip() for l in out.splitlines() if l.strip().startswith("***"))
     q = MeshQuality(

@@ -69,6 +69,7 @@ class CfdPoint:
     end_time_s: float | None = None        # oil bath: simulated time limit (default: 20 shaft revolutions)
     max_iterations: int = 2000            # flooded: SIMPLE iteration limit
     steady_tolerance: float = 0.02         # relative change of the windowed mean torque
+    max_wall_time_s: float | None = None   # stop (and write) when the run takes longer than this
 
     @property
     def flooded(self) -> bool:
@@ -129,6 +130,17 @@ def _load(point: CfdPoint):
     return bearing, g, lub
 
 
+#: Settings that may change when a run is resumed (they do not change the case itself).
+RESUMABLE_SETTINGS = ("max_wall_time_s", "max_iterations", "end_time_s", "steady_tolerance")
+
+
+def _point_identity(point: CfdPoint) -> dict[str, Any]:
+    d = _point_json(point)
+    for k in RESUMABLE_SETTINGS:
+        d.pop(k, None)
+    return d
+
+
 def _point_json(point: CfdPoint) -> dict[str, Any]:
     d = asdict(point)
     d["speed_rpm"] = point.speed_rad_s * 30.0 / math.pi
@@ -148,9 +160,16 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     meta_path = case_dir / "kegel-case.json"
     if meta_path.is_file():
         meta = json.loads(meta_path.read_text())
-        if meta.get("point") != _point_json(point):
+        old = {k: v for k, v in meta.get("point", {}).items() if k not in RESUMABLE_SETTINGS}
+        if old != _point_identity(point):
             raise FoamError(f"{case_dir} holds a case of another point ({meta_path}); choose another folder")
-        log(f"cfd: resuming the case in {case_dir}")
+        log(f"cfd: resuming the case in {case_dir} from its latest time")
+        end = point.max_iterations if point.flooded else point.end_time_s
+        if end is not None:
+            _set_controldict_value(case_dir, "endTime", f"{end:.10g}")
+        _set_controldict_value(case_dir, "stopAt", "endTime")
+        meta["point"] = _point_json(point)
+        meta_path.write_text(json.dumps(meta, indent=2))
         return case_dir
     bearing, g, lub = _load(point)
     cg = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m)
@@ -164,13 +183,13 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     omega_i = point.speed_rad_s
     if point.flooded:
         template = "bearing_flooded"
-        params = {"n_iterations": point.max_iterations, "write_interval": 100}
+        params = {"n_iterations": point.max_iterations, "write_interval": min(100, point.max_iterations)}
     else:
         template = "bearing_oil_bath"
         rev = 2 * math.pi / abs(omega_i)
         end = point.end_time_s if point.end_time_s is not None else 20 * rev
         y_level = -cg.housing_radius_m + point.oil_level_m
-        params = {"end_time": end, "write_interval_s": max(end / 20, rev), "y_level": y_level,
+        params = {"end_time": end, "write_interval_s": min(max(end / 20, rev), end), "y_level": y_level,
                   "air_density_kg_m3": AIR_DENSITY_KG_M3, "air_nu_m2_s": AIR_KINEMATIC_VISCOSITY_M2_S,
                   "sigma_N_m": OIL_AIR_SURFACE_TENSION_N_M,
                   "box_min": (-1.0, -1.0, -1.0), "box_max": (1.0, y_level, 1.0),
@@ -255,6 +274,8 @@ class CfdResult:
     liquid_volume: dict[str, list[float]] = field(default_factory=dict)
     runtime_s: float = 0.0
     cells: int = 0
+    stopped_by: str = ""
+    simulated_time: float = 0.0
 
 
 class _Progress:
@@ -272,8 +293,11 @@ class _Progress:
         self.last = now
         res = " ".join(f"{k} {v:.1e}" for k, v in list(st.residuals.items())[:4])
         eta_txt = "?" if not math.isfinite(eta) else f"{eta / 60:.1f} min"
-        print(f"cfd: t = {st.time:.6g} s  step {st.steps}  dt {st.delta_t:.2e}  Co {st.courant_max:.2f}  "
-              f"{res}  ETA {eta_txt}", file=self.stream, flush=True)
+        if math.isfinite(st.delta_t):
+            head = f"t = {st.time:.6g} s  step {st.steps}  dt {st.delta_t:.2e}  Co {st.courant_max:.2f}"
+        else:
+            head = f"iteration {st.time:.0f}"
+        print(f"cfd: {head}  {res}  ETA {eta_txt}", file=self.stream, flush=True)
 
 
 class _SteadyMonitor:
@@ -333,16 +357,30 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     solver = "simpleFoam" if point.flooded else "interFoam"
     cage_rev = 2 * math.pi / abs(kin["cage_rad_s"])
     monitor = _SteadyMonitor(case, point.flooded, cage_rev, point.steady_tolerance)
-    end = None if point.flooded else float(_controldict_value(case, "endTime"))
+    end = float(_controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
     t0 = time.monotonic()
+    budget_hit = {"hit": False}
+
+    def stop_when(st: LogState) -> bool:
+        if monitor(st):
+            return True
+        if point.max_wall_time_s is not None and time.monotonic() - t0 > point.max_wall_time_s:
+            budget_hit["hit"] = True
+            log(f"cfd: wall-time budget of {point.max_wall_time_s:.0f} s reached at t = {st.time:g}; stopping")
+            return True
+        return False
+
     summary = run_solver(case, solver, n_procs=point.n_procs, end_time=end,
-                         progress=_Progress() if progress else None, stop_when=monitor,
+                         progress=_Progress() if progress else None, stop_when=stop_when,
                          max_courant=25.0 if not point.flooded else 1e30)
     runtime = time.monotonic() - t0
-    if point.n_procs > 1:
+    if point.n_procs > 1 and any(_is_time_dir(p) for p in (case / "processor0").iterdir()):
         run_utility(case, "reconstructPar", "-latestTime")
     result = _postprocess(case, point, meta, monitor.window, summary.stopped_early or summary.state.ended)
+    result.stopped_by = ("steady torque" if monitor.window is not None else
+                         "wall-time budget" if budget_hit["hit"] else "end time / iteration limit")
+    result.simulated_time = float(summary.state.time)
     result.runtime_s = runtime + meta.get("runtime_before_s", 0.0)
     meta["runtime_before_s"] = result.runtime_s
     (case / "kegel-case.json").write_text(json.dumps(meta, indent=2))
@@ -352,11 +390,32 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,
            "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
            "averaging_window": list(result.window_s), "steady": result.steady,
+           "stopped_by": result.stopped_by,
+           "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
            "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
     return result
+
+
+def _is_time_dir(p: Path) -> bool:
+    try:
+        return p.is_dir() and float(p.name) > 0
+    except ValueError:
+        return False
+
+
+def _set_controldict_value(case: Path, key: str, value: str) -> None:
+    import re
+
+    path = case / "system" / "controlDict"
+    text, n = re.subn(rf"^{key}\s+[^;]+;", f"{key:<16}{value};", path.read_text(), count=1, flags=re.M)
+    if n != 1:
+        raise FoamError(f"{path}: no {key} entry")
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(text)
+    tmp.replace(path)
 
 
 def _controldict_value(case: Path, key: str) -> str:

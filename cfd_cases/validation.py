@@ -1,5 +1,6 @@
 """Validation cases run through the same pipeline as the bearing (gmsh -> gmshToFoam -> solver ->
-forces): laminar Taylor-Couette torque against the analytic solution.
+forces): laminar Taylor-Couette torque against the analytic solution, and the free surface and
+volume of oil in a turning tank (VOF) against the paraboloid.
 
 Couette flow between an inner cylinder of radius R1 turning at omega and a resting outer cylinder
 of radius R2 (laminar, below the Taylor instability) has the azimuthal velocity
@@ -19,12 +20,15 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from .foam import run_solver
 from .forces import read_forces
 from .mesh import check_mesh, gmsh_to_foam, write_msh22
 from .template import render_case
 
-__all__ = ["CouetteResult", "couette_torque_analytic", "taylor_couette"]
+__all__ = ["CouetteResult", "couette_torque_analytic", "taylor_couette", "RotatingTankResult",
+           "rotating_tank_surface", "rotating_tank"]
 
 
 def couette_torque_analytic(r_inner_m: float, r_outer_m: float, omega_rad_s: float,
@@ -132,3 +136,142 @@ def taylor_couette(
         cells=quality.cells, reynolds=omega_rad_s * r_inner_m * (r_outer_m - r_inner_m) / kinematic_viscosity_m2_s,
         iterations=summary.state.steps, wall_time_s=wall,
     )
+
+
+@dataclass(frozen=True)
+class RotatingTankResult:
+    """Free surface of oil in a turning tank: simulated against the paraboloid, and volume.
+
+    Attributes
+    ----------
+    radius_m, height_sim_m, height_analytic_m
+        Radial bins and the oil column height in each (simulated and analytic).
+    max_height_error_m
+        Largest |simulated - analytic| over the bins.
+    cell_height_m
+        Height of one cell layer (the resolution of the surface).
+    volume_change
+        Relative change of the oil volume from start to end.
+    """
+
+    radius_m: list[float]
+    height_sim_m: list[float]
+    height_analytic_m: list[float]
+    max_height_error_m: float
+    cell_height_m: float
+    volume_change: float
+    cells: int
+    wall_time_s: float
+
+
+def rotating_tank_surface(r: np.ndarray, radius_m: float, fill_height_m: float, omega_rad_s: float,
+                          g_m_s2: float = 9.81) -> np.ndarray:
+    """Height of the free surface of a liquid in solid-body rotation in a closed cylinder, at
+    rest height ``fill_height_m``: ``h(r) = h0 + omega^2 (r^2 - R^2/2) / (2 g)`` (the paraboloid
+    of equal volume; valid while it touches neither bottom nor lid)."""
+    return fill_height_m + omega_rad_s**2 * (np.asarray(r) ** 2 - 0.5 * radius_m**2) / (2.0 * g_m_s2)
+
+
+def _tank_mesh(msh: Path, radius: float, height: float, n_radial: int, n_layers: int) -> None:
+    import gmsh
+
+    gmsh.initialize(interruptible=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("tank")
+        occ = gmsh.model.occ
+        disk = occ.addDisk(0, 0, 0, radius, radius)
+        occ.synchronize()
+        gmsh.option.setNumber("Mesh.MeshSizeMax", radius / n_radial)
+        gmsh.option.setNumber("Mesh.MeshSizeMin", 0.7 * radius / n_radial)
+        gmsh.model.mesh.setRecombine(2, disk)
+        gmsh.option.setNumber("Mesh.Algorithm", 8)  # frontal-Delaunay for quads
+        out = occ.extrude([(2, disk)], 0, 0, height, numElements=[n_layers], recombine=True)
+        occ.synchronize()
+        top = out[0][1]
+        vol = out[1][1]
+        side = [t for d, t in out[2:] if d == 2]
+        gmsh.model.addPhysicalGroup(2, [disk, top, *side], name="walls")
+        gmsh.model.addPhysicalGroup(3, [vol], name="tank")
+        gmsh.model.mesh.generate(3)
+        write_msh22(msh)
+    finally:
+        gmsh.finalize()
+
+
+def rotating_tank(
+    *,
+    radius_m: float = 0.05,
+    height_m: float = 0.08,
+    fill_height_m: float = 0.04,
+    omega_rad_s: float = 12.0,
+    oil_nu_m2_s: float = 5e-3,
+    oil_density_kg_m3: float = 870.0,
+    n_radial: int = 14,
+    n_layers: int = 40,
+    end_time_s: float = 1.5,
+    n_procs: int = 2,
+    work_dir: str | Path | None = None,
+) -> RotatingTankResult:
+    """Oil in a closed tank turning at ``omega`` about the vertical axis (rotating walls,
+    absolute frame), starting in solid-body rotation with a flat surface. After the surface
+    settles it must be the paraboloid of :func:`rotating_tank_surface`, and the oil volume
+    must be unchanged. The viscous oil (nu 5e-3 m2/s) damps the sloshing within the run."""
+    from .foam import read_field, run_utility, write_field_values
+
+    base = Path(work_dir) if work_dir is not None else Path(tempfile.mkdtemp(prefix="kegel-tank-"))
+    case = render_case("rotating_tank", base / "rotating_tank", {
+        "end_time": end_time_s, "fill_height_m": fill_height_m, "omega_rad_s": omega_rad_s,
+        "oil_nu_m2_s": oil_nu_m2_s, "oil_density_kg_m3": oil_density_kg_m3,
+        "p_ref_point": (0.0, 0.0, 0.97 * height_m),
+    }, overwrite=True)
+    _tank_mesh(case / "tank.msh", radius_m, height_m, n_radial, n_layers)
+    gmsh_to_foam(case, case / "tank.msh", {"walls": "wall"})
+    quality = check_mesh(case)
+    run_utility(case, "setFields")
+    run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0", log_name="writeCellCentres")
+    run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
+    c = read_field(case / "0" / "C")
+    vol = read_field(case / "0" / "V")
+    for f in ("C", "Cx", "Cy", "Cz", "V"):
+        (case / "0" / f).unlink(missing_ok=True)
+    write_field_values(case / "0" / "U", omega_rad_s * np.cross(np.array([0.0, 0.0, 1.0]), c))
+    if n_procs > 1:
+        (case / "system" / "decomposeParDict").write_text(
+            "FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+            f"numberOfSubdomains {n_procs};\nmethod hierarchical;\ncoeffs {{ n ({n_procs} 1 1); order xyz; }}\n")
+        run_utility(case, "decomposePar", "-force")
+    t0 = time.monotonic()
+    run_solver(case, "interFoam", n_procs=n_procs, end_time=end_time_s)
+    wall = time.monotonic() - t0
+    if n_procs > 1:
+        run_utility(case, "reconstructPar", "-latestTime")
+    last = max((p for p in case.iterdir() if _is_number(p.name) and float(p.name) > 0), key=lambda p: float(p.name))
+    alpha = read_field(last / "alpha.oil")
+    # column height per radial bin: oil volume in the annulus / annulus area
+    r = np.hypot(c[:, 0], c[:, 1])
+    edges = np.linspace(0.0, radius_m, 8)
+    centres, h_sim = [], []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        sel = (r >= lo) & (r < hi)
+        area = float(vol[sel].sum()) / height_m
+        h_sim.append(float((alpha[sel] * vol[sel]).sum()) / area)
+        centres.append(float(np.sqrt(0.5 * (lo**2 + hi**2))))  # area-weighted bin radius
+    # the analytic height averaged over each annulus: h is linear in r^2, so the mean over the
+    # annulus equals h at the area-weighted radius used above
+    h_ref = rotating_tank_surface(np.array(centres), radius_m, fill_height_m, omega_rad_s)
+    v0 = float((np.clip(read_field(case / "0" / "alpha.oil"), 0, 1) * vol).sum())
+    v1 = float((alpha * vol).sum())
+    return RotatingTankResult(
+        radius_m=centres, height_sim_m=h_sim, height_analytic_m=h_ref.tolist(),
+        max_height_error_m=float(np.max(np.abs(np.array(h_sim) - h_ref))),
+        cell_height_m=height_m / n_layers, volume_change=(v1 - v0) / v0, cells=quality.cells, wall_time_s=wall,
+    )
+
+
+def _is_number(name: str) -> bool:
+    try:
+        float(name)
+    except ValueError:
+        return False
+    return True

@@ -95,3 +95,55 @@ def test_cfd_run_rejects_bad_input():
     assert "--oil-level" in _bad("--oil-level", "90 mm")
     assert "--speed" in _bad("--speed", "0 rpm")
     assert "--np" in _bad("--np", "0")
+
+
+SPEED = 2000 * math.pi / 30
+
+
+def _finite(x) -> bool:
+    return all(math.isfinite(v) for v in np.ravel(x))
+
+
+@pytest.mark.openfoam
+def test_tiny_flooded_case_runs_and_resumes(tmp_path):
+    """Both ways of stopping: an iteration limit, then a resumed run that goes on from there."""
+    case = tmp_path / "flooded"
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None,
+                 mesh="tiny", n_procs=2, max_iterations=40)
+    res = run_case(p, case, progress=False, log=lambda s: None)
+    data = json.loads((case / "results.json").read_text())
+    t = data["torques_Nm"]
+    assert _finite([t[k]["total"] for k in ("inner_ring", "outer_ring", "cage")])
+    assert t["inner_ring"]["total"] < 0  # the oil brakes the turning inner ring
+    assert t["outer_ring"]["total"] > 0  # and drags the fixed outer ring along
+    assert data["power_loss_W"] > 0 and res.loss_torque_at_shaft_Nm > 0
+    assert data["provenance"]["kegel_version"] and data["fidelity"]["mesh"] == "tiny"
+    assert len(data["rollers"]) == 17 and _finite([r["force_N"] for r in data["rollers"]])
+    assert data["iterations"] == pytest.approx(40)
+    # resume with more iterations: continues from iteration 40
+    p2 = CfdPoint(**{**p.__dict__, "max_iterations": 60})
+    run_case(p2, case, progress=False, log=lambda s: None)
+    data2 = json.loads((case / "results.json").read_text())
+    assert data2["iterations"] == pytest.approx(60)
+    assert data2["runtime_s"] > data["runtime_s"]
+    # another point in the same folder is refused
+    with pytest.raises(Exception, match="another point"):
+        run_case(CfdPoint(**{**p.__dict__, "speed_rad_s": 2 * SPEED}), case, progress=False, log=lambda s: None)
+
+
+@pytest.mark.openfoam
+def test_tiny_oil_bath_case_runs_with_conserved_oil(tmp_path):
+    case = tmp_path / "bath"
+    level = 0.040  # to the shaft centre of the 32208 (D/2)
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=level,
+                 mesh="tiny", n_procs=2, end_time_s=3e-4)
+    run_case(p, case, progress=False, log=lambda s: None)
+    data = json.loads((case / "results.json").read_text())
+    t = data["torques_Nm"]
+    assert _finite([t[k]["total"] for k in ("inner_ring", "outer_ring", "cage")])
+    assert t["inner_ring"]["total"] < 0
+    assert data["simulated_time_s"] == pytest.approx(3e-4, rel=1e-3)
+    vol = np.array(data["liquid_volume"]["volume_m3"])
+    assert len(vol) > 10 and _finite(vol)
+    # about half the oil space is filled; the volume stays constant (MRF, closed walls)
+    assert abs(vol[-1] - vol[0]) / vol[0] < 1e-3
