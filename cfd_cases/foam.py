@@ -37,6 +37,7 @@ __all__ = [
     "run_solver",
     "read_field",
     "read_boundary_vectors",
+    "read_boundary_geometry",
     "write_field_values",
     "rotation_matrix",
 ]
@@ -439,6 +440,71 @@ def read_boundary_vectors(path: str | Path) -> dict[str, np.ndarray]:
         if vals.shape[0] != n:
             raise FoamError(f"{path}: patch {name}: expected {n} vectors, read {vals.shape[0]}")
         out[name] = vals
+    return out
+
+
+def _foam_list_body(path: Path) -> str:
+    """The text of an ASCII OpenFOAM list file after its header (from the element count on)."""
+    text = path.read_text()
+    end_header = text.find("}", text.find("FoamFile"))
+    return text[end_header + 1:] if end_header >= 0 else text
+
+
+def read_boundary_geometry(case: str | Path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Face centres and area vectors (pointing out of the domain) of every boundary patch, from
+    an ASCII ``constant/polyMesh``: patch name -> (Cf, Sf), each of shape (n, 3).
+
+    Polygons are split into triangles about their vertex average; the centre is the area-weighted
+    mean of the triangle centroids (OpenFOAM's own definition).
+    """
+    mesh = Path(case) / "constant" / "polyMesh"
+    for f in ("points", "faces", "boundary"):
+        if not (mesh / f).is_file():
+            raise FoamError(f"{mesh / f}: missing (is the mesh converted?)")
+    body = _foam_list_body(mesh / "points")
+    start = body.find("(")
+    n_pts = int(body[:start].split()[-1])
+    nums = body[start + 1: body.rfind(")")].replace("(", " ").replace(")", " ").split()
+    pts = np.array(nums, dtype=float).reshape(-1, 3)
+    if pts.shape[0] != n_pts:
+        raise FoamError(f"{mesh / 'points'}: expected {n_pts} points, read {pts.shape[0]} (binary format?)")
+    btext = (mesh / "boundary").read_text()
+    patches = [(m.group(1), int(m.group(3)), int(m.group(2)))
+               for m in re.finditer(r"^\s{4}(\w+)\s*\n\s{4}\{[^}]*?nFaces\s+(\d+);[^}]*?startFace\s+(\d+);",
+                                    btext, re.S | re.M)]
+    first = min(start_face for _, start_face, _ in patches)
+    body = _foam_list_body(mesh / "faces")
+    start = body.find("(")
+    tokens = body[start + 1:].replace("(", " ( ").replace(")", " ) ").split()
+    # walk the face list: k ( a b c ... )
+    faces: list[list[int]] = []
+    i = 0
+    index = 0
+    while i < len(tokens) and tokens[i] != ")":
+        k = int(tokens[i])
+        if index >= first:
+            faces.append([int(t) for t in tokens[i + 2: i + 2 + k]])
+        index += 1
+        i += k + 3
+    out: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    for name, start_face, n in patches:
+        cf = np.empty((n, 3))
+        sf = np.empty((n, 3))
+        for j in range(n):
+            v = pts[faces[start_face - first + j]]
+            if len(v) == 3:
+                sf[j] = 0.5 * np.cross(v[1] - v[0], v[2] - v[0])
+                cf[j] = v.mean(axis=0)
+                continue
+            c0 = v.mean(axis=0)
+            tri_s = 0.5 * np.cross(v - c0, np.roll(v, -1, axis=0) - c0)
+            tri_c = (v + np.roll(v, -1, axis=0) + c0) / 3.0
+            s_vec = tri_s.sum(axis=0)
+            n_hat = s_vec / np.linalg.norm(s_vec)
+            w = tri_s @ n_hat
+            sf[j] = s_vec
+            cf[j] = (w[:, None] * tri_c).sum(axis=0) / w.sum()
+        out[name] = (cf, sf)
     return out
 
 

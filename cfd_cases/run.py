@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from .foam import (FoamError, LogState, read_boundary_vectors, read_field, run_solver, run_utility,
+from .foam import (FoamError, LogState, read_boundary_geometry, read_field, run_solver, run_utility,
                    write_field_values)
 from .forces import read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
@@ -209,7 +209,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     (tmp / "bearing.msh").unlink()
     quality = check_mesh(tmp)
     mesh_s = time.monotonic() - t0
-    _write_wall_velocities(tmp, kin["cage_rad_s"], rollers)
+    _write_wall_velocities(tmp, kin, rollers)
     log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
         f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
     if not point.flooded:
@@ -231,31 +231,41 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     return case_dir
 
 
-def _write_wall_velocities(case: Path, omega_c: float, rollers: list[dict[str, Any]]) -> None:
-    """Rigid-body velocities of the cage and roller walls at their face centres (see 0/U)."""
+def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]]) -> None:
+    """Wall velocities of every patch at its face centres (see 0/U), and the initial oil
+    velocity; keeps the cell centres for the oil pictures."""
     run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0", log_name="writeCellCentres")
-    centres = read_boundary_vectors(case / "0" / "C")
     cells = read_field(case / "0" / "C")
-    np.save(case / "cell_centres.npy", cells)  # for the oil pictures
-    # Initial oil velocity: 1 % of the cage's rigid rotation. The wall fluxes of the moving cage
-    # and rollers balance only to round-off, and v1912's CorrectPhi/adjustPhi judges that
-    # imbalance relative to the internal flux, which is zero for oil at rest (fatal error).
-    u0 = INITIAL_ROTATION_FRACTION * omega_c * np.cross(np.array([0.0, 0.0, 1.0]), cells)
-    write_field_values(case / "0" / "U", u0)
     for f in ("C", "Cx", "Cy", "Cz"):
         (case / "0" / f).unlink(missing_ok=True)
-    folder = case / "0" / "wallVelocity"
-    folder.mkdir(exist_ok=True)
+    np.save(case / "cell_centres.npy", cells)
+    faces = read_boundary_geometry(case)
     ez = np.array([0.0, 0.0, 1.0])
-    motions = {"cage": (omega_c * ez, np.zeros(3))}
+    omega_c, omega_i = kin["cage_rad_s"], kin["inner_ring_rad_s"]
+    motions: dict[str, tuple[np.ndarray, np.ndarray]] = {
+        "inner_ring": (omega_i * ez, np.zeros(3)), "shaft": (omega_i * ez, np.zeros(3)),
+        "outer_ring": (np.zeros(3), np.zeros(3)), "housing": (np.zeros(3), np.zeros(3)),
+        "cage": (omega_c * ez, np.zeros(3)),
+    }
     for r in rollers:
         motions[r["name"]] = (r["omega"] * r["axis"], r["origin"])
+    folder = case / "0" / "wallVelocity"
+    folder.mkdir(exist_ok=True)
+    missing = set(motions) ^ set(faces)
+    if missing:
+        raise FoamError(f"{case}: patches {sorted(missing)} have no wall motion or are not in the mesh")
     for name, (w, o) in motions.items():
-        if name not in centres:
-            raise FoamError(f"{case}/0/C: no face centres of patch {name}")
-        u = np.cross(w, centres[name] - o)
+        cf, sf = faces[name]
+        frame = omega_c * np.cross(ez, cf)
+        rel = np.cross(w, cf - o) - frame
+        n = sf / np.linalg.norm(sf, axis=1)[:, None]
+        u = frame + rel - n * np.einsum("ij,ij->i", rel, n)[:, None]
         rows = "\n".join(f"({x:.12g} {y:.12g} {z:.12g})" for x, y, z in u)
         (folder / name).write_text(f"value nonuniform List<vector> {len(u)}\n(\n{rows}\n);\n")
+    # Initial oil velocity: 1 % of the cage's rigid rotation. The wall fluxes balance only to
+    # round-off, and v1912's CorrectPhi/adjustPhi judges that imbalance relative to the
+    # internal flux, which is zero for oil at rest (fatal error).
+    write_field_values(case / "0" / "U", INITIAL_ROTATION_FRACTION * omega_c * np.cross(ez, cells))
 
 
 @dataclass
@@ -301,12 +311,16 @@ class _Progress:
 
 
 class _SteadyMonitor:
-    """Stops a run when the inner-ring torque is (statistically) steady.
+    """Stops a run when the torques are (statistically) steady.
 
-    Flooded (steady solver): the torque of the last 10 % of iterations changes by less than the
-    tolerance and at least 200 iterations ran. Oil bath: the means over the last two windows of
-    one cage revolution each differ by less than the tolerance, after at least four windows.
+    Flooded (steady solver): over the last 20 % of the iterations (at least 40) the torques on
+    the inner ring, the outer ring and the cage each change by less than a quarter of the
+    tolerance times the inner-ring torque, after at least 200 iterations. Oil bath: the inner-
+    ring torque's means over the last two windows of one cage revolution each differ by less
+    than the tolerance, after at least four windows.
     """
+
+    BODIES = ("inner_ring", "outer_ring", "cage")
 
     def __init__(self, case: Path, flooded: bool, window_s: float, tol: float):
         self.case, self.flooded, self.window_s, self.tol = case, flooded, window_s, tol
@@ -319,22 +333,24 @@ class _SteadyMonitor:
             return False
         self.last_check = now
         try:
-            f = read_forces(self.case, "forces_inner_ring")
+            series = {b: read_forces(self.case, f"forces_{b}") for b in self.BODIES}
         except FoamError:
             return False
+        f = series["inner_ring"]
         t, m = f.time, f.moment_total[:, 2]
         if len(t) < 20:
             return False
         if self.flooded:
             if t[-1] < 200:
                 return False
-            k = max(int(0.1 * len(t)), 5)
-            seg = m[-k:]
-            change = (seg.max() - seg.min()) / max(abs(seg.mean()), 1e-300)
-            if change < self.tol * 0.25:
-                self.window = (float(t[-k]), float(t[-1]))
-                return True
-            return False
+            k = max(int(0.2 * len(t)), 40)
+            scale = max(abs(float(m[-k:].mean())), 1e-300)
+            for b in self.BODIES:
+                seg = series[b].moment_total[-k:, 2]
+                if (seg.max() - seg.min()) > 0.25 * self.tol * scale:
+                    return False
+            self.window = (float(t[-k]), float(t[-1]))
+            return True
         w = self.window_s
         if t[-1] < 4 * w:
             return False
@@ -393,10 +409,20 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "stopped_by": result.stopped_by,
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
+           "angular_momentum_balance": _balance(result.torques_Nm),
            "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
     return result
+
+
+def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
+    """Sum of the axial torques on all walls. In a steady state it must vanish (the oil's angular
+    momentum is constant); with gravity (oil bath) the weight's torque joins it."""
+    total = sum(t[k]["total"] for k in ("inner_ring", "shaft", "outer_ring", "housing", "cage",
+                                        "rollers_about_bearing_axis"))
+    drive = abs(t["inner_ring"]["total"] + t["shaft"]["total"])
+    return {"sum_of_wall_torques_Nm": total, "relative_to_drive_torque": total / drive if drive else float("nan")}
 
 
 def _is_time_dir(p: Path) -> bool:

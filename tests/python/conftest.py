@@ -12,10 +12,10 @@ EXAMPLES = REPO / "examples"
 SHARED_REFERENCE = REPO.parent / "shared" / "reference"
 
 
-def run_kegel(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
+def run_kegel(*args: str, cwd: Path | None = None, timeout: float = 120) -> subprocess.CompletedProcess:
     """Run the installed `kegel` command (the entry point users call)."""
     exe = Path(sys.executable).with_name("kegel")
-    return subprocess.run([str(exe), *args], capture_output=True, text=True, cwd=cwd, timeout=120)
+    return subprocess.run([str(exe), *args], capture_output=True, text=True, cwd=cwd, timeout=timeout)
 
 
 @pytest.fixture

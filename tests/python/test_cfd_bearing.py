@@ -70,14 +70,16 @@ def test_roller_wall_motion_is_orbit_plus_spin(g32208, k):
 
 
 @pytest.mark.openfoam
-def test_tiny_mesh_is_clean_and_has_every_patch(g32208, tmp_path):
-    cg = cfd_geometry(g32208)
+@pytest.mark.parametrize("designation", ["32208", "32216"])
+def test_tiny_mesh_is_clean_and_has_every_patch(designation, tmp_path):
+    g = derive_geometry(load_bearing(designation), load_material("bearing_steel"))
+    cg = cfd_geometry(g)
     case = render_case("check_cavity", tmp_path / "m", {"n_cells": 2, "delta_t": 1, "end_time": 1,
                                                           "n_steps": 1, "solver": "simpleFoam", "steady": True,
                                                           "lid_velocity": (0, 0, 0)})
     types = build_mesh(cg, "tiny", tmp_path / "b.msh")
     assert set(types) == {"inner_ring", "shaft", "outer_ring", "housing", "cage",
-                          *[roller_name(k) for k in range(17)]}
+                          *[roller_name(k) for k in range(g.roller_count)]}
     gmsh_to_foam(case, tmp_path / "b.msh", types)
     q = check_mesh(case)
     assert q.ok and 20_000 < q.cells < 200_000
@@ -133,17 +135,33 @@ def test_tiny_flooded_case_runs_and_resumes(tmp_path):
 
 @pytest.mark.openfoam
 def test_tiny_oil_bath_case_runs_with_conserved_oil(tmp_path):
+    """Through the command line, as a user runs it: results, torque history and oil picture."""
     case = tmp_path / "bath"
-    level = 0.040  # to the shaft centre of the 32208 (D/2)
-    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=level,
-                 mesh="tiny", n_procs=2, end_time_s=3e-4)
-    run_case(p, case, progress=False, log=lambda s: None)
-    data = json.loads((case / "results.json").read_text())
+    res = run_kegel("cfd", "run", "--bearing", "32208", "--speed", "2000 rpm", "--temperature", "50 degC",
+                    "--oil-level", "shaft_center", "--mesh", "tiny", "--np", "2", "--end-time", "0.3 ms",
+                    "--output", str(case), "--quiet", "--format", "json", timeout=900)
+    assert res.returncode == 0, res.stderr[-3000:]
+    data = json.loads(res.stdout)
     t = data["torques_Nm"]
     assert _finite([t[k]["total"] for k in ("inner_ring", "outer_ring", "cage")])
     assert t["inner_ring"]["total"] < 0
     assert data["simulated_time_s"] == pytest.approx(3e-4, rel=1e-3)
     vol = np.array(data["liquid_volume"]["volume_m3"])
     assert len(vol) > 10 and _finite(vol)
-    # about half the oil space is filled; the volume stays constant (MRF, closed walls)
-    assert abs(vol[-1] - vol[0]) / vol[0] < 1e-3
+    assert abs(vol[-1] - vol[0]) / vol[0] < 1e-3  # MRF and closed walls keep the oil
+    for name in ("torque_history", "oil_distribution"):
+        assert (case / f"{name}.png").stat().st_size > 10_000
+    assert data["liebrecht_Nm"]["total_Nm"] > 0
+
+
+@pytest.mark.openfoam
+def test_sweep_writes_table_and_plot(tmp_path):
+    res = run_kegel("cfd", "sweep", "--bearing", "32208", "--speed", "1000 rpm", "--speed", "2000 rpm",
+                    "--oil-level", "flooded", "--mesh", "tiny", "--max-iterations", "15",
+                    "--output", str(tmp_path), "--quiet", timeout=900)
+    assert res.returncode == 0, res.stderr[-3000:]
+    rows = (tmp_path / "sweep.csv").read_text().splitlines()
+    assert len(rows) == 3 and rows[0].startswith("oil_level,speed_rpm")
+    torques = [float(r.split(",")[2]) for r in rows[1:]]
+    assert 0 < torques[0] < torques[1]  # more loss at the higher speed
+    assert (tmp_path / "sweep.png").stat().st_size > 10_000

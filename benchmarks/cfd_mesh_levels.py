@@ -1,0 +1,76 @@
+"""CFD speed against error: the flooded 32208 at 2000 rpm and 50 degC on each mesh level.
+
+Runs (or, when the case folder exists, resumes and re-reads) the flooded case at each level on
+2 cores and reports cells, meshing time, solver runtime, time per iteration and the torques,
+with the deviation from the finest level that was run. Not part of ``make bench`` (the small
+level takes about 15 minutes); run it as
+
+    .venv/bin/python benchmarks/cfd_mesh_levels.py [tiny small ...]
+
+Output: benchmarks/results/cfd_mesh_levels.json and .png (the case folders go to
+results/cfd/bench_<level>, which is not kept in git).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent
+
+
+def main(levels: list[str]) -> int:
+    from kegel.cfd_cases.run import CfdPoint, run_case
+    from kegel.io import atomic_write_json
+
+    rows = []
+    for level in levels:
+        p = CfdPoint(bearing="32208", speed_rad_s=2000 * math.pi / 30, temperature_K=323.15,
+                     oil_level_m=None, mesh=level, n_procs=2, max_iterations=1000)
+        case = REPO / "results" / "cfd" / f"bench_{level}"
+        run_case(p, case, progress=False, log=lambda s: print(s, file=sys.stderr))
+        data = json.loads((case / "results.json").read_text())
+        meta = json.loads((case / "kegel-case.json").read_text())
+        it = data["iterations"]
+        rows.append({"level": level, "cells": data["fidelity"]["cells"], "mesh_time_s": meta["mesh_time_s"],
+                     "runtime_s": data["runtime_s"], "iterations": it,
+                     "s_per_iteration": data["runtime_s"] / max(it, 1),
+                     "inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
+                     "loss_torque_Nm": data["loss_torque_at_shaft_Nm"], "steady": data["steady"]})
+    ref = rows[-1]
+    for r in rows:
+        r["deviation_inner_ring"] = r["inner_ring_Nm"] / ref["inner_ring_Nm"] - 1
+        r["deviation_loss_torque"] = r["loss_torque_Nm"] / ref["loss_torque_Nm"] - 1
+    out = HERE / "results"
+    out.mkdir(exist_ok=True)
+    atomic_write_json(out / "cfd_mesh_levels.json", {"reference_level": ref["level"], "rows": rows})
+    print(f"{'level':<7}{'cells':>9}{'mesh s':>8}{'run s':>8}{'s/it':>7}{'iters':>7}"
+          f"{'M_IR mN m':>11}{'loss mN m':>11}{'dev loss':>10}")
+    for r in rows:
+        print(f"{r['level']:<7}{r['cells']:>9}{r['mesh_time_s']:>8.1f}{r['runtime_s']:>8.0f}{r['s_per_iteration']:>7.2f}"
+              f"{r['iterations']:>7.0f}{1e3 * r['inner_ring_Nm']:>11.2f}{1e3 * r['loss_torque_Nm']:>11.2f}"
+              f"{100 * r['deviation_loss_torque']:>9.1f}%")
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(figsize=(6, 4), constrained_layout=True)
+        ax.plot([r["runtime_s"] for r in rows], [100 * abs(r["deviation_loss_torque"]) for r in rows], "o-")
+        for r in rows:
+            ax.annotate(f"{r['level']} ({r['cells'] // 1000} k cells)", (r["runtime_s"], 100 * abs(r["deviation_loss_torque"])))
+        ax.set_xlabel("solver runtime on 2 cores (s)")
+        ax.set_ylabel(f"|deviation of the loss torque| from '{ref['level']}' (%)")
+        ax.set_title("flooded 32208, 2000 rpm, 50 degC", fontsize=9)
+        fig.savefig(out / "cfd_mesh_levels.png", dpi=120)
+    except ImportError:
+        pass
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:] or ["tiny", "small"]))
