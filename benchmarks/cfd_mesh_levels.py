@@ -7,8 +7,9 @@ level takes about 15 minutes); run it as
 
     .venv/bin/python benchmarks/cfd_mesh_levels.py [tiny small ...]
 
-Output: benchmarks/results/cfd_mesh_levels.json and .png (the case folders go to
-results/cfd/bench_<level>, which is not kept in git).
+Output: benchmarks/results/cfd_mesh_levels.json and .png. The case folders are the ones
+``kegel cfd run`` uses (results/cfd/32208_2000rpm_flooded_50C_<level>, not kept in git), so
+cases already run are resumed and only re-read.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ def main(levels: list[str]) -> int:
     for level in levels:
         p = CfdPoint(bearing="32208", speed_rad_s=2000 * math.pi / 30, temperature_K=323.15,
                      oil_level_m=None, mesh=level, n_procs=2, max_iterations=1000)
-        case = REPO / "results" / "cfd" / f"bench_{level}"
+        case = REPO / "results" / "cfd" / f"32208_2000rpm_flooded_50C_{level}"  # as kegel cfd run names it
         run_case(p, case, progress=False, log=lambda s: print(s, file=sys.stderr))
         data = json.loads((case / "results.json").read_text())
         meta = json.loads((case / "kegel-case.json").read_text())

@@ -84,6 +84,15 @@ def test_tiny_mesh_is_clean_and_has_every_patch(designation, tmp_path):
     q = check_mesh(case)
     assert q.ok and 20_000 < q.cells < 200_000
     assert q.max_non_orthogonality_deg < 75
+    # the boundary face geometry kegel computes from polyMesh matches OpenFOAM's face centres
+    from kegel.cfd_cases.foam import read_boundary_geometry, read_boundary_vectors, run_utility
+
+    run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0")
+    ours = read_boundary_geometry(case)
+    foams = read_boundary_vectors(case / "0" / "C")
+    for name in ("cage", "inner_ring", roller_name(3)):
+        assert np.abs(ours[name][0] - foams[name]).max() < 1e-9
+        assert (np.linalg.norm(ours[name][1], axis=1) > 0).all()
 
 
 def _bad(*args):
