@@ -32,9 +32,17 @@ def plot_torque_history(case: str | Path, window: Sequence[float], path: str | P
 
     case, path = Path(case), Path(path)
     fig, ax = plt.subplots(figsize=(7.5, 4.2), constrained_layout=True)
+    late = []
     for name, label in (("inner_ring", "inner ring"), ("outer_ring", "outer ring"), ("cage", "cage")):
         f = read_forces(case, f"forces_{name}")
-        ax.plot(f.time, f.moment_total[:, 2] * 1e3, label=label, lw=1.2)
+        m = f.moment_total[:, 2] * 1e3
+        ax.plot(f.time, m, label=label, lw=1.2)
+        late.append(m[f.time >= f.time[0] + 0.05 * (f.time[-1] - f.time[0])])
+    # scale to the run after its first 5 % (the start-up spike would flatten everything else)
+    vals = np.concatenate(late) if late else np.zeros(1)
+    lo, hi = float(min(vals.min(), 0.0)), float(max(vals.max(), 0.0))
+    pad = 0.1 * (hi - lo if hi > lo else 1.0)
+    ax.set_ylim(lo - pad, hi + pad)
     ax.axvspan(window[0], window[1], color="0.85", label="averaging window", zorder=0)
     ax.set_xlabel("SIMPLE iteration" if steady_solver else "time (s)")
     ax.set_ylabel("torque about the bearing axis (mN m)")

@@ -459,8 +459,13 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, ended: bool) -
     f_ir = read_forces(case, "forces_inner_ring")
     t = f_ir.time
     if window is None:
-        # not detected steady: average over the last 10 % (flooded) or the last cage revolution
-        span = 0.1 * (t[-1] - t[0]) if point.flooded else 2 * math.pi / abs(omega_c)
+        # not steady: average over the last 10 % of the iterations (flooded), or over the last
+        # cage revolution when the run lasted two, else over the last 20 % of the simulated time
+        cage_rev = 2 * math.pi / abs(omega_c)
+        if point.flooded:
+            span = 0.1 * (t[-1] - t[0])
+        else:
+            span = cage_rev if t[-1] - t[0] >= 2 * cage_rev else 0.2 * (t[-1] - t[0])
         window = (float(max(t[-1] - span, t[0])), float(t[-1]))
         steady = False
     else:
