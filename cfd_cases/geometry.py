@@ -58,7 +58,7 @@ HOUSING_CLEARANCE_RATIO = 0.25
 MESH_LEVELS = {
     "tiny": {"size_max": 0.45, "size_gap": 0.16},
     "small": {"size_max": 0.30, "size_gap": 0.09},
-    "fine": {"size_max": 0.10, "size_gap": 0.025},
+    "fine": {"size_max": 0.18, "size_gap": 0.05},
 }
 
 
