@@ -304,6 +304,7 @@ def run_solver(
     reason: str | None = None
     fatal_at: int | None = None
     stopped = False
+    stop_requested = 0.0
     with open(log_path, "a") as log, subprocess.Popen(
         cmd, env=foam_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         bufsize=1, start_new_session=True,
@@ -337,6 +338,12 @@ def run_solver(
                         progress(state, eta)
                     if stop_when is not None and not stopped and stop_when(state):
                         stopped = True
+                        stop_requested = now
+                        _request_write_now(case)
+                    elif stopped and now - stop_requested > 15.0:
+                        # OpenFOAM ignores a controlDict change within fileModificationSkew
+                        # (10 s) of the previous one: ask again until the solver stops
+                        stop_requested = now
                         _request_write_now(case)
                 if time.monotonic() - t0 > timeout_s:
                     reason = f"timeout after {timeout_s:.0f} s"
