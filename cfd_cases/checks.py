@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .foam import FoamDivergenceError, read_field, rotation_matrix, run_solver, run_utility
+from .foam import FoamDivergenceError, read_field, rotation_matrix, run_solver, run_utility, time_dirs
 from .template import render_case
 
 __all__ = ["RotationCheck", "rotation_check", "ROTATION_CHECK_CASES"]
@@ -113,8 +113,7 @@ def rotation_check(
                 message = str(exc)
                 return RotationCheck(solver, stock, angle_deg, n_steps, float("inf"),
                                      float("inf"), True, message)
-            last = max((p for p in case.iterdir() if _is_time(p.name) and float(p.name) > 0),
-                       key=lambda p: float(p.name))
+            last = time_dirs(case)[-1]
             u = read_field(last / "U")
             alpha = read_field(last / "alpha.water") if solver == "interFoam" else None
             fields[label] = (u, alpha)
@@ -131,11 +130,3 @@ def rotation_check(
             import shutil
 
             shutil.rmtree(base, ignore_errors=True)
-
-
-def _is_time(name: str) -> bool:
-    try:
-        float(name)
-    except ValueError:
-        return False
-    return True

@@ -75,6 +75,7 @@ def _liebrecht(point) -> dict[str, float]:
 def _run_one(point, case: Path, args) -> dict[str, Any]:
     from kegel.io import atomic_write_json
 
+    from .foam import time_dirs
     from .plots import plot_oil_distribution, plot_torque_history
     from .run import run_case
 
@@ -83,8 +84,7 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
     pictures = {"torque_history": str(plot_torque_history(case, res.window_s, case / "torque_history.png",
                                                           steady_solver=point.flooded))}
     if not point.flooded:
-        times = sorted((p for p in case.iterdir() if _is_time(p.name) and (p / "alpha.oil").is_file()),
-                       key=lambda p: float(p.name))
+        times = [p for p in time_dirs(case) if (p / "alpha.oil").is_file()]
         if times:
             zc = float(np.mean([r["centre_m"][2] for r in meta["rollers"]]))
             from kegel.data import load_bearing
@@ -98,13 +98,6 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
     data["pictures"] = pictures
     atomic_write_json(case / "results.json", data)
     return data
-
-
-def _is_time(name: str) -> bool:
-    try:
-        return float(name) > 0
-    except ValueError:
-        return False
 
 
 def _cmd_run(args: argparse.Namespace) -> int:

@@ -40,6 +40,9 @@ __all__ = [
     "read_boundary_geometry",
     "write_field_values",
     "rotation_matrix",
+    "time_dirs",
+    "controldict_value",
+    "set_controldict_value",
 ]
 
 #: Solvers kegel rebuilds (``make setup``); the Debian binaries of these are not used.
@@ -382,14 +385,41 @@ def _kill(proc: subprocess.Popen) -> None:
             pass
 
 
+def time_dirs(case: str | Path) -> list[Path]:
+    """The time folders of a case after the start (name a number > 0), in time order."""
+    out = []
+    for p in Path(case).iterdir():
+        try:
+            if p.is_dir() and float(p.name) > 0:
+                out.append(p)
+        except ValueError:
+            continue
+    return sorted(out, key=lambda p: float(p.name))
+
+
+def controldict_value(case: str | Path, key: str) -> str:
+    """The value of ``key`` in ``case/system/controlDict`` (as written)."""
+    path = Path(case) / "system" / "controlDict"
+    m = re.search(rf"^{key}\s+([^;]+);", path.read_text(), re.M)
+    if m is None:
+        raise FoamError(f"{path}: no {key} entry")
+    return m.group(1).strip()
+
+
+def set_controldict_value(case: str | Path, key: str, value: str) -> None:
+    """Replace the value of ``key`` in ``case/system/controlDict`` (write, then rename)."""
+    path = Path(case) / "system" / "controlDict"
+    text, n = re.subn(rf"^{key}\s+[^;]+;", f"{key:<16}{value};", path.read_text(), count=1, flags=re.M)
+    if n != 1:
+        raise FoamError(f"{path}: no {key} entry")
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(text)
+    tmp.replace(path)
+
+
 def _request_write_now(case: Path) -> None:
     """Ask a running solver to write and stop (runTimeModifiable re-reads controlDict)."""
-    cd = case / "system" / "controlDict"
-    text = cd.read_text()
-    text = re.sub(r"^stopAt\s+\w+;", "stopAt          writeNow;", text, flags=re.M)
-    tmp = cd.with_suffix(".tmp")
-    tmp.write_text(text)
-    tmp.replace(cd)
+    set_controldict_value(case, "stopAt", "writeNow")
 
 
 _RE_FIELD = re.compile(

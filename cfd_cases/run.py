@@ -34,8 +34,8 @@ from typing import Any
 
 import numpy as np
 
-from .foam import (FoamError, LogState, read_boundary_geometry, read_field, run_solver, run_utility,
-                   write_field_values)
+from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
+                   run_utility, set_controldict_value, time_dirs, write_field_values)
 from .forces import read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
@@ -166,8 +166,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         log(f"cfd: resuming the case in {case_dir} from its latest time")
         end = point.max_iterations if point.flooded else point.end_time_s
         if end is not None:
-            _set_controldict_value(case_dir, "endTime", f"{end:.10g}")
-        _set_controldict_value(case_dir, "stopAt", "endTime")
+            set_controldict_value(case_dir, "endTime", f"{end:.10g}")
+        set_controldict_value(case_dir, "stopAt", "endTime")
         meta["point"] = _point_json(point)
         meta_path.write_text(json.dumps(meta, indent=2))
         return case_dir
@@ -373,7 +373,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     solver = "simpleFoam" if point.flooded else "interFoam"
     cage_rev = 2 * math.pi / abs(kin["cage_rad_s"])
     monitor = _SteadyMonitor(case, point.flooded, cage_rev, point.steady_tolerance)
-    end = float(_controldict_value(case, "endTime"))
+    end = float(controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
     t0 = time.monotonic()
     budget_hit = {"hit": False}
@@ -391,7 +391,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
                          progress=_Progress() if progress else None, stop_when=stop_when,
                          max_courant=25.0 if not point.flooded else 1e30)
     runtime = time.monotonic() - t0
-    if point.n_procs > 1 and any(_is_time_dir(p) for p in (case / "processor0").iterdir()):
+    if point.n_procs > 1 and time_dirs(case / "processor0"):
         run_utility(case, "reconstructPar", "-latestTime")
     result = _postprocess(case, point, meta, monitor.window, summary.stopped_early or summary.state.ended)
     result.stopped_by = ("steady torque" if monitor.window is not None else
@@ -423,34 +423,6 @@ def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
                                         "rollers_about_bearing_axis"))
     drive = abs(t["inner_ring"]["total"] + t["shaft"]["total"])
     return {"sum_of_wall_torques_Nm": total, "relative_to_drive_torque": total / drive if drive else float("nan")}
-
-
-def _is_time_dir(p: Path) -> bool:
-    try:
-        return p.is_dir() and float(p.name) > 0
-    except ValueError:
-        return False
-
-
-def _set_controldict_value(case: Path, key: str, value: str) -> None:
-    import re
-
-    path = case / "system" / "controlDict"
-    text, n = re.subn(rf"^{key}\s+[^;]+;", f"{key:<16}{value};", path.read_text(), count=1, flags=re.M)
-    if n != 1:
-        raise FoamError(f"{path}: no {key} entry")
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(text)
-    tmp.replace(path)
-
-
-def _controldict_value(case: Path, key: str) -> str:
-    import re
-
-    m = re.search(rf"^{key}\s+([^;]+);", (case / "system" / "controlDict").read_text(), re.M)
-    if m is None:
-        raise FoamError(f"{case}/system/controlDict: no {key}")
-    return m.group(1).strip()
 
 
 def _postprocess(case: Path, point: CfdPoint, meta: dict, window, ended: bool) -> CfdResult:

@@ -217,7 +217,7 @@ def rotating_tank(
     absolute frame), starting in solid-body rotation with a flat surface. After the surface
     settles it must be the paraboloid of :func:`rotating_tank_surface`, and the oil volume
     must be unchanged. The viscous oil (nu 5e-3 m2/s) damps the sloshing within the run."""
-    from .foam import read_field, run_utility, write_field_values
+    from .foam import read_field, run_utility, time_dirs, write_field_values
 
     base = Path(work_dir) if work_dir is not None else Path(tempfile.mkdtemp(prefix="kegel-tank-"))
     case = render_case("rotating_tank", base / "rotating_tank", {
@@ -246,7 +246,7 @@ def rotating_tank(
     wall = time.monotonic() - t0
     if n_procs > 1:
         run_utility(case, "reconstructPar", "-latestTime")
-    last = max((p for p in case.iterdir() if _is_number(p.name) and float(p.name) > 0), key=lambda p: float(p.name))
+    last = time_dirs(case)[-1]
     alpha = read_field(last / "alpha.oil")
     # column height per radial bin: oil volume in the annulus / annulus area
     r = np.hypot(c[:, 0], c[:, 1])
@@ -267,11 +267,3 @@ def rotating_tank(
         max_height_error_m=float(np.max(np.abs(np.array(h_sim) - h_ref))),
         cell_height_m=height_m / n_layers, volume_change=(v1 - v0) / v0, cells=quality.cells, wall_time_s=wall,
     )
-
-
-def _is_number(name: str) -> bool:
-    try:
-        float(name)
-    except ValueError:
-        return False
-    return True
