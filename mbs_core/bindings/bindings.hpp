@@ -9,4 +9,5 @@ void bind_material(nanobind::module_& m);
 void bind_tribology(nanobind::module_& m);
 void bind_contact(nanobind::module_& m);
 void bind_quasi_static(nanobind::module_& m);
+void bind_dynamics(nanobind::module_& m);
 }  // namespace kegel::python

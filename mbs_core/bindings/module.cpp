@@ -15,4 +15,5 @@ NB_MODULE(_core, m) {
   kegel::python::bind_tribology(m);
   kegel::python::bind_contact(m);
   kegel::python::bind_quasi_static(m);
+  kegel::python::bind_dynamics(m);
 }
