@@ -308,7 +308,8 @@ def _cmd_run(args: argparse.Namespace) -> int:
           f"lubricant {scene.lubricant.name}, {scene.lubrication.mode}"
           + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
     rib = f"rib cell model {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "rib closed-form Hertz"
-    print(f"  fidelity {f.name}: quasi-static, {f.slices} slices ({f.slice_model.replace('_', ' ')}), {rib}, "
+    solution = "quasi-static" if f.solution == "quasi_static" else f"dynamic ({scene.dynamic.duration_s * 1e3:g} ms)"
+    print(f"  fidelity {f.name}: {solution}, {f.slices} slices ({f.slice_model.replace('_', ' ')}), {rib}, "
           f"hydraulic {f.hydraulic}")
     rows = []
     for p in result.points:
@@ -325,6 +326,13 @@ def _cmd_run(args: argparse.Namespace) -> int:
         print("  * axial force carried at the prescribed axial offset")
     print(f"results: {result.files['json']}, {result.files['csv']}")
     print(f"plots:   {result.files['torque_plot']}, {result.files['breakdown_plot']}, {result.files['loads_plot']}")
+    if f.solution == "dynamic":
+        for p in result.points:
+            d = p["dynamic"]
+            print(f"  point {p['index']}: outer-ring torque {p['outer_ring_torque_Nm']:.4f} N m "
+                  f"(std {p['outer_ring_torque_std_Nm']:.1e}), power balance {100 * p['power_balance_error']:+.2f} %, "
+                  f"{d['revolutions']:.2f} rev in {p['runtime_s']:.1f} s; series, VTK, plot: "
+                  f"{Path(d['files']['json']).parent}")
     print(f"runtime: {result.runtime_s:.2f} s for {len(result.points)} operating point(s)")
     return 0
 

@@ -29,7 +29,7 @@ from . import _core
 from .data import BearingData, MaterialData
 from .errors import KegelInputError
 from .geometry import BearingGeometry
-from .quasi_static import bearing_friction, bearing_model
+from .quasi_static import bearing_friction, bearing_model, load_distribution
 
 D = _core.dynamics
 
@@ -38,6 +38,9 @@ __all__ = [
     "DynamicResult",
     "SimulationDiverged",
     "cage_mass_properties",
+    "plot_result",
+    "write_result",
+    "write_vtk_series",
     "dynamic_model",
     "simulate",
 ]
@@ -179,6 +182,9 @@ def _record(rows: dict[str, list], out: dict) -> None:
         for mch in MECHANISMS:
             rows.setdefault(f"power_{c}_{mch}_W", []).append(out["power_W"][c][mch])
     rows.setdefault("ring_force_N", []).append(list(out["ring_force_N"]))
+    for c in CONTACTS:
+        rows.setdefault(f"Lambda_min_{c}", []).append(out["Lambda_min"][c])
+        rows.setdefault(f"phi_max_{c}", []).append(out["phi_max"][c])
 
 
 QUADRATURES = (["outer_ring_torque_Nm", "drive_torque_Nm", "power_input_W"]
@@ -251,7 +257,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              damping_time_s: float = DAMPING_TIME_S, elements: Sequence[Any] = (), progress: bool = False,
              checkpoint: str | Path | None = None, checkpoint_interval_s: float = 5e-3,
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
-             raise_on_failure: bool = True) -> DynamicResult:
+             raise_on_failure: bool = True, hold_axial: bool = False,
+             max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "") -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -272,7 +279,16 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         rollers and the cage: the hydraulic forces of the coupling layer.
     checkpoint
         A file (.npz) the state is written to every ``checkpoint_interval_s`` (atomically); when it
-        exists at the start, the run resumes from it.
+        exists at the start and was written with the same ``checkpoint_key`` (a fingerprint of the
+        inputs), the run resumes from it; a finished run removes it.
+    hold_axial
+        Hold the inner ring axially where the quasi-static solution put it (the partner bearing
+        of an adjusted pair): needed when the axial load cannot hold the rollers in the cup, e.g.
+        a light load at high speed, where the centrifugal force pushes the rollers out of the cup
+        with more than the axial load.
+    max_ring_displacement_m
+        The run stops with :class:`SimulationDiverged` when the inner ring moves further: the
+        bearing has come apart (far beyond any elastic deflection).
     initial_speed_rad_s
         Speed of the quasi-static initial state (default: the profile's speed at t = 0; with 0 the
         bodies start at rest).
@@ -291,24 +307,49 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     wall0 = time.perf_counter()
     model, qs_model = dynamic_model(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
                                     slices=slices, method=method, cage=cage, damping_time_s=damping_time_s)
-    # initial state from the quasi-static solution at the start speed
+    # initial state from the quasi-static solution at the start speed; where that has no
+    # solution (a light load at high speed: the centrifugal force lifts the rollers off the
+    # inner ring, which is the skidding case), from the load distribution at rest, turning at
+    # pure-rolling kinematics: the dynamic run then finds its own state
     qs_data = _core.quasi_static.BearingData(qs_model)
-    if abs(w_start) > 0:
-        _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
-                                 inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,
-                                 radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model, data=qs_data,
-                                 cage=cage)
-        wc, spins = fr.cage_speed_rad_s, list(fr.roller_spin_rad_s)
-    else:
-        from .quasi_static import load_distribution
-        load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
-                          misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
-        wc, spins = 0.0, [0.0] * g.roller_count
+    initial = "quasi_static"
+    wc, spins = 0.0, [0.0] * g.roller_count
+    try:
+        if abs(w_start) > 0:
+            _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
+                                     inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                                     radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model,
+                                     data=qs_data, cage=cage)
+            if not fr.converged:
+                raise RuntimeError("the quasi-static kinematics did not converge")
+            wc, spins = fr.cage_speed_rad_s, list(fr.roller_spin_rad_s)
+        else:
+            load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                              radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
+    except RuntimeError:
+        # the load distribution at rest; the positions do not depend on the slice count, and the
+        # independent-slice solver does not converge under light loads (below ~0.3 kN for the
+        # 32216), so the alternative-slicing model gives them then
+        qs_data = None
+        for sl, me in ((slices, method), (30, "alternative_slicing")):
+            qm = bearing_model(g, bearing, material, slices=sl, method=me)
+            qd = _core.quasi_static.BearingData(qm)
+            try:
+                load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                                  radial_N=radial_N, misalignment_rad=misalignment_rad, model=qm, data=qd)
+                qs_data = qd
+                break
+            except RuntimeError:
+                continue
+        if qs_data is None:
+            raise
+        wc, spins = _pure_rolling(g, w_start)
+        initial = "load distribution at rest, pure rolling"
     y0 = np.asarray(D.initial_state(model, qs_data, wc, spins))
     drive = D.RingDrive()
     drive.time_s = list(prof[:, 0])
     drive.speed_rad_s = list(prof[:, 1])
-    if axial_N is not None:
+    if axial_N is not None and not hold_axial:
         drive.axial_N = axial_N
     else:
         drive.free_z = False
@@ -326,11 +367,13 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     states: list[np.ndarray] = []
     quads: list[np.ndarray] = []
     ck = Path(checkpoint) if checkpoint is not None else None
-    if ck is not None and ck.exists():
-        saved = np.load(ck, allow_pickle=False)
-        if saved["y"].shape != y0.shape:
-            raise KegelInputError(str(ck), "y", saved["y"].shape, f"a state of size {y0.size} (another model)")
+    resumed_from = None
+    saved = np.load(ck, allow_pickle=False) if ck is not None and ck.exists() else None
+    if saved is not None and (str(saved["key"]) != checkpoint_key or saved["y"].shape != y0.shape):
+        saved = None  # written for other inputs: start afresh (it is overwritten)
+    if saved is not None:
         t_start, y0 = float(saved["t"]), saved["y"]
+        resumed_from = t_start
         times = list(saved["times"])
         states = list(saved["states"])
         quads = list(saved["quads"])
@@ -352,13 +395,23 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
                 finished, message = False, sim.message
                 break
         out = sim.outputs()
+        yr = np.asarray(sim.state)[model.ring_offset:model.ring_offset + 3]
+        moved = float(np.linalg.norm(yr - y0[model.ring_offset:model.ring_offset + 3]))
+        if moved > max_ring_displacement_m:
+            finished = False
+            message = (f"the inner ring moved {moved * 1e3:.2f} mm from its initial place by t = {sim.time_s * 1e3:.3f} ms "
+                       f"(displacement {np.array2string(yr * 1e3, precision=3)} mm): the bearing comes apart. A single "
+                       f"tapered roller bearing needs an axial load above the axial component of the roller "
+                       f"loads (centrifugal force at speed, Fr tan(alpha_o) under radial load); hold the ring "
+                       f"axially (hold_axial) to model the partner bearing")
+            break
         times.append(float(sim.time_s))
         states.append(np.asarray(sim.state))
         quads.append(np.asarray(sim.quadratures))
         _record(rows, out)
         prog.update(sim.time_s, sim.last_step_s, sim.steps)
         if ck is not None and sim.time_s - last_ck >= checkpoint_interval_s - 1e-15:
-            _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows)
+            _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows, checkpoint_key)
             last_ck = sim.time_s
     prog.close()
     t = np.asarray(times)
@@ -366,7 +419,9 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     Q = np.asarray(quads)
     if len(t) > 1:
         series.update(_interval_means(t, Q))
-    stats = {"steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
+    if finished and ck is not None:
+        ck.unlink(missing_ok=True)
+    stats = {"initial_state": initial, "resumed_from_s": resumed_from, "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
              "slices": slices, "method": method, "cage": cage, "rtol": rtol}
     steady = _steady(t, series, Q, average_fraction) if len(t) > 1 else {}
@@ -377,11 +432,22 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     return res
 
 
+def _pure_rolling(g: BearingGeometry, inner_speed_rad_s: float) -> tuple[float, list[float]]:
+    """Cage speed and roller spins (relative to the cage) of pure rolling on both raceways: the
+    rolling cones share their apex, so the speeds go with the radii at the middle contact."""
+    r_i, r_o = 0.5 * g.inner_raceway_diameter_mid_m, 0.5 * g.outer_raceway_diameter_mid_m
+    wc = inner_speed_rad_s * r_i / (r_i + r_o)
+    rho = 0.5 * g.roller_mean_diameter_m
+    # radii perpendicular to the axes at the contact: the ring's r, the roller's rho / cos(gamma)
+    spin = -(inner_speed_rad_s - wc) * r_i / (rho / math.cos(g.roller_half_angle_rad))
+    return wc, [spin] * g.roller_count
+
+
 def _save_checkpoint(path: Path, t: float, y: np.ndarray, times: list, states: list, quads: list,
-                     rows: dict) -> None:
+                     rows: dict, key: str) -> None:
     tmp = path.with_name(path.name + ".tmp.npz")
     np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states), quads=np.asarray(quads),
-             rows=json.dumps(rows))
+             rows=json.dumps(rows), key=key)
     os.replace(tmp, path)
 
 
@@ -394,3 +460,212 @@ def _divergence_report(res: DynamicResult, message: str) -> str:
                      f"largest interference {s['max_penetration_m'][-1] * 1e6:.3f} um, kinetic energy "
                      f"{s['kinetic_energy_J'][-1]:.4g} J")
     return "; ".join(lines)
+
+
+# ------------------------------------------------------------------------------------------
+# Result files: JSON + CSV + VTK time series + plots, each written atomically
+# ------------------------------------------------------------------------------------------
+
+def _json_safe(x: Any) -> Any:
+    if isinstance(x, dict):
+        return {k: _json_safe(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_json_safe(v) for v in x]
+    if isinstance(x, (np.floating, float)):
+        return float(x) if math.isfinite(float(x)) else None
+    if isinstance(x, (np.integer,)):
+        return int(x)
+    if isinstance(x, np.ndarray):
+        return _json_safe(x.tolist())
+    return x
+
+
+def write_result(res: DynamicResult, directory: str | Path, meta: dict[str, Any] | None = None, *,
+                 g: BearingGeometry | None = None, vtk: bool = True, plots: bool = True,
+                 vtk_every: int = 1) -> dict[str, str]:
+    """Write a dynamic run: ``dynamic.json`` (steady averages, spreads, power balance, solver
+    statistics, runtime, ``meta``: scene, fidelity, provenance), ``series.csv`` (scalars and
+    interval means over time), ``roller_series.npz`` (per-roller series), a VTK time series of
+    the bodies (``bodies.pvd`` + ``vtk/bodies_NNNN.vtu``, needs ``g``) and ``dynamic.png``."""
+    from .io import atomic_write_json, atomic_write_text, provenance
+
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    files: dict[str, str] = {}
+    doc = {"meta": meta or {}, "provenance": provenance(), "finished": res.finished, "message": res.message,
+           "runtime_s": res.runtime_s, "revolutions": res.revolutions,
+           "wall_time_per_revolution_s": res.runtime_s / res.revolutions if res.revolutions > 0 else None,
+           "steady": res.steady, "stats": res.stats,
+           "final": {k: res.series[k][-1] for k in res.series if res.series[k].ndim == 1}}
+    files["json"] = str(atomic_write_json(out / "dynamic.json", _json_safe(doc)))
+    scal = [k for k in res.series if res.series[k].ndim == 1]
+    lines = [",".join(["time_s"] + scal)]
+    for i, t in enumerate(res.time_s):
+        lines.append(",".join([repr(float(t))] + [repr(float(res.series[k][i])) for k in scal]))
+    files["csv"] = str(atomic_write_text(out / "series.csv", "\n".join(lines) + "\n"))
+    tmp = out / ".roller_series.tmp.npz"
+    np.savez(tmp, time_s=res.time_s, **{k: v for k, v in res.series.items() if v.ndim == 2}, states=res.states)
+    os.replace(tmp, out / "roller_series.npz")
+    files["roller_series"] = str(out / "roller_series.npz")
+    if vtk and g is not None and len(res.states):
+        files["vtk"] = str(write_vtk_series(res, g, out, every=vtk_every))
+    if plots and len(res.time_s) > 1:
+        files["plot"] = plot_result(res, out / "dynamic.png")
+    return files
+
+
+def _roller_surface(g: BearingGeometry, n_seg: int = 16) -> tuple[np.ndarray, np.ndarray]:
+    """Triangulated truncated cone of a roller in its own frame (axis z, centre of mass at 0)."""
+    L, r_m, tg = g.roller_length_m, 0.5 * g.roller_mean_diameter_m, math.tan(g.roller_half_angle_rad)
+    c = g.roller_com_offset_m
+    ang = np.linspace(0, 2 * math.pi, n_seg, endpoint=False)
+    pts = []
+    for xi in (-0.5 * L, 0.5 * L):
+        r = r_m + xi * tg
+        pts += [(r * math.cos(a), r * math.sin(a), xi - c) for a in ang]
+    pts += [(0, 0, -0.5 * L - c), (0, 0, 0.5 * L - c)]
+    tri = []
+    for k in range(n_seg):
+        k1 = (k + 1) % n_seg
+        tri += [(k, k1, n_seg + k), (k1, n_seg + k1, n_seg + k)]
+        tri += [(2 * n_seg, k1, k), (2 * n_seg + 1, n_seg + k, n_seg + k1)]
+    return np.asarray(pts, float), np.asarray(tri, int)
+
+
+def _cage_surface(g: BearingGeometry, n_seg: int = 96) -> tuple[np.ndarray, np.ndarray]:
+    """The cage's conical shell (mid-surface, windows not cut) in the cage frame (origin at
+    the cage centre on the axis)."""
+    beta, Dw, L = g.roller_axis_angle_rad, g.roller_mean_diameter_m, g.roller_length_m
+    rp, off = 0.5 * g.cage_pitch_diameter_m, CAGE_OFFSET_RATIO * Dw
+    ang = np.linspace(0, 2 * math.pi, n_seg, endpoint=False)
+    pts = []
+    for s in (-(0.5 + CAGE_OVERHANG_RATIO) * L, (0.5 + CAGE_OVERHANG_RATIO) * L):
+        r = rp + s * math.sin(beta) + off * math.cos(beta)
+        z = s * math.cos(beta) - off * math.sin(beta)
+        pts += [(r * math.cos(a), r * math.sin(a), z) for a in ang]
+    tri = []
+    for k in range(n_seg):
+        k1 = (k + 1) % n_seg
+        tri += [(k, k1, n_seg + k), (k1, n_seg + k1, n_seg + k)]
+    return np.asarray(pts, float), np.asarray(tri, int)
+
+
+def _frame_from_axis(a: np.ndarray) -> np.ndarray:
+    a = a / np.linalg.norm(a)
+    t = np.array([1.0, 0, 0]) if abs(a[0]) < 0.9 else np.array([0, 1.0, 0])
+    e1 = np.cross(a, t)
+    e1 /= np.linalg.norm(e1)
+    return np.column_stack([e1, np.cross(a, e1), a])
+
+
+def _quat_matrix(q: np.ndarray) -> np.ndarray:
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def write_vtk_series(res: DynamicResult, g: BearingGeometry, directory: Path, every: int = 1) -> Path:
+    """Bodies (rollers and cage; frame R, metres) at each output time as ``.vtu`` files and a
+    ParaView collection ``bodies.pvd`` (meshio). Cell data: body id (-1 cage, j roller j);
+    point data: velocity. Rollers are bodies of revolution: their spin angle is not a state, so
+    their surfaces show position and axis, not the spin."""
+    import meshio
+
+    vdir = directory / "vtk"
+    vdir.mkdir(parents=True, exist_ok=True)
+    Z = g.roller_count
+    rp, rt = _roller_surface(g)
+    cp, ct = _cage_surface(g)
+    entries = []
+    for i in range(0, len(res.time_s), max(1, every)):
+        y = res.states[i]
+        pts, tris, body, vel = [], [], [], []
+        n0 = 0
+        for j in range(Z):
+            yr = y[12 * j:12 * j + 12]
+            R = _frame_from_axis(yr[3:6])
+            P = yr[:3] + rp @ R.T
+            V = yr[6:9] + np.cross(yr[9:12], P - yr[:3])
+            pts.append(P)
+            vel.append(V)
+            tris.append(rt + n0)
+            body += [j] * len(rt)
+            n0 += len(P)
+        yc = y[12 * Z:12 * Z + 13]
+        Rc = _quat_matrix(yc[3:7])
+        P = yc[:3] + cp @ Rc.T
+        wc = Rc @ yc[10:13]
+        pts.append(P)
+        vel.append(yc[7:10] + np.cross(wc, P - yc[:3]))
+        tris.append(ct + n0)
+        body += [-1] * len(ct)
+        mesh = meshio.Mesh(np.vstack(pts), [("triangle", np.vstack(tris))],
+                           point_data={"velocity_m_s": np.vstack(vel)},
+                           cell_data={"body": [np.asarray(body, dtype=np.int32)]})
+        name = f"bodies_{i:05d}.vtu"
+        tmp = vdir / f".{name}.tmp.vtu"
+        meshio.write(tmp, mesh)
+        os.replace(tmp, vdir / name)
+        entries.append((float(res.time_s[i]), f"vtk/{name}"))
+    xml = ['<?xml version="1.0"?>', '<VTKFile type="Collection" version="0.1">', "  <Collection>"]
+    xml += [f'    <DataSet timestep="{t:.9g}" file="{f}"/>' for t, f in entries]
+    xml += ["  </Collection>", "</VTKFile>", ""]
+    from .io import atomic_write_text
+    return atomic_write_text(directory / "bodies.pvd", "\n".join(xml))
+
+
+def plot_result(res: DynamicResult, path: str | Path) -> str:
+    """Torques (interval means), speeds, roller loads and the power balance over time."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    t = res.time_s * 1e3
+    s = res.series
+    fig, ax = plt.subplots(2, 2, figsize=(11, 7))
+    a = ax[0, 0]
+    a.plot(t, s["mean_outer_ring_torque_Nm"], label="outer ring (reaction)")
+    a.plot(t, s["mean_drive_torque_Nm"], ls="--", label="drive (inner ring)")
+    for c in CONTACTS:
+        a.plot(t, s[f"mean_torque_{c}_Nm"], lw=0.8, alpha=0.7, label=c.replace("_", " "))
+    if res.steady:
+        a.axvspan(res.steady["window_start_s"] * 1e3, res.steady["window_end_s"] * 1e3, color="0.9", zorder=0)
+    a.set_ylabel("torque [N m] (mean over each output interval)")
+    a.legend(fontsize=7)
+    a = ax[0, 1]
+    a.plot(t, s["inner_speed_rad_s"] * 30 / math.pi, label="inner ring")
+    a.plot(t, s["cage_speed_rad_s"] * 30 / math.pi, label="cage")
+    a.plot(t, np.mean(s["roller_spin_rad_s"], axis=1) * 30 / math.pi, ls=":", label="roller spin (mean, rel. cage)")
+    a.set_ylabel("speed [rpm]")
+    a.legend(fontsize=7)
+    a = ax[1, 0]
+    Z = s["roller_inner_N"].shape[1]
+    for j in range(0, Z, max(1, Z // 4)):
+        a.plot(t, s["roller_inner_N"][:, j], lw=0.8, label=f"roller {j}, inner")
+    a.plot(t, s["roller_cage_N"].max(axis=1), color="k", lw=0.8, label="largest cage-window force")
+    a.set_ylabel("load [N]")
+    a.set_xlabel("time [ms]")
+    a.legend(fontsize=7)
+    a = ax[1, 1]
+    a.plot(t, s["mean_power_input_W"], label="input (drive)")
+    P = sum(s[f"mean_power_{c}_{m}_W"] for c in CONTACTS for m in MECHANISMS) + s["mean_cage_power_W"] + \
+        s["mean_damping_power_W"] + s["mean_external_power_W"]
+    a.plot(t, P, ls="--", label="dissipated (contacts, cage, damping, oil)")
+    a.set_ylabel("power [W]")
+    a.set_xlabel("time [ms]")
+    a.legend(fontsize=7)
+    st = res.steady
+    if st:
+        fig.suptitle(f"steady means over {st['window_start_s'] * 1e3:.1f}-{st['window_end_s'] * 1e3:.1f} ms: "
+                     f"outer-ring torque {st['outer_ring_torque_Nm'] * 1e3:.2f} mN m "
+                     f"(std of interval means {st['outer_ring_torque_std'] * 1e3:.2f}), power balance "
+                     f"{100 * st['power_balance_error']:+.2f} %; wall {res.runtime_s:.1f} s", fontsize=9)
+    fig.tight_layout()
+    path = Path(path)
+    fd_tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
+    fig.savefig(fd_tmp, dpi=110)
+    plt.close(fig)
+    os.replace(fd_tmp, path)
+    return str(path)

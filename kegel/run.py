@@ -11,6 +11,7 @@ mechanism, the roller loads around the circumference, the cage slip).
 from __future__ import annotations
 
 import csv
+import json
 import io
 import math
 import os
@@ -85,6 +86,13 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     bar = _Progress(len(scene.operating_points), progress)
     points: list[dict[str, Any]] = []
     for i, op in enumerate(scene.operating_points):
+        if fid.solution == "dynamic":
+            point = _dynamic_point(scene, op, friction, out)
+            points.append(point)
+            if on_point:
+                on_point(point)
+            bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
+            continue
         dist, fr = bearing_friction(
             g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
             axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
@@ -139,7 +147,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "bearing": b.designation, "lubricant": scene.lubricant.name, "material": m.name,
             "friction_parameters": friction.name,
             "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
-            "fidelity": {**fid.as_dict(), "solution_used": "quasi_static",
+            "fidelity": {**fid.as_dict(), "solution_used": fid.solution,
+                         **({"dynamic": scene.dynamic.as_dict()} if fid.solution == "dynamic" else {}),
                          "rib_load_model": "hertz (load distribution); friction: "
                                            + (f"cell model {rib_cells} x {rib_cells}" if rib_cells else "one ellipse")},
             "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime, "points": points,
@@ -148,6 +157,79 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     }
     files.update(_plots(scene, points, out))
     return RunResult(points=points, files=files, runtime_s=runtime)
+
+
+def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
+    """One operating point with the dynamic simulation: steady-state means as the point's
+    figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
+    checkpoint after an interrupt)."""
+    from .dynamics import simulate, write_result
+
+    g, b, m, fid, dyn = scene.geometry, scene.bearing, scene.material, scene.fidelity, scene.dynamic
+    if fid.rib_model == "cell":
+        rib_note = "hertz (the dynamic model evaluates the rib as one ellipse)"
+    else:
+        rib_note = "hertz"
+    profile = list(dyn.speed_profile) or [(0.0, op.speed_rad_s)]
+    pdir = out / "dynamic" / f"point_{op.index:03d}"
+    pdir.mkdir(parents=True, exist_ok=True)
+    res = simulate(g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, speed_profile=profile,
+                   duration_s=dyn.duration_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
+                   radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, slices=fid.slices,
+                   method=fid.slice_model, cage=fid.cage, output_interval_s=dyn.output_interval_s,
+                   average_fraction=dyn.average_fraction, rtol=dyn.tolerance, hold_axial=dyn.hold_axial,
+                   checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
+                   checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
+                                              fid.as_dict(), dyn.as_dict()], sort_keys=True),
+                   progress=sys.stderr.isatty())
+    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+    st = res.steady
+    w = st["inner_speed_rad_s"]
+    hyd = None
+    if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
+        hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=scene.lubrication.oil_level_m,
+                                cage_speed_rad_s=st["cage_speed_rad_s"])
+    power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
+    by_contact = {c: sum(power[c].values()) / w for c in CONTACTS}
+    by_contact["cage"] = st["cage_power_W"] / w
+    by_mech = {k: sum(power[c][k] for c in CONTACTS) / w for k in MECHANISMS}
+    by_mech["solid_sliding"] += st["cage_power_W"] / w
+    wc0 = w * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+    last = {k: res.series[k][-1].tolist() for k in ("roller_outer_N", "roller_inner_N", "roller_rib_N")}
+    Z = g.roller_count
+    meta = {"scene": scene.source, "operating_point": op.as_dict(), "fidelity": fid.as_dict(),
+            "dynamic": dyn.as_dict(), "rib_model": rib_note}
+    files = write_result(res, pdir, meta, g=g, vtk_every=max(1, len(res.time_s) // 100))
+    return {
+        **op.as_dict(),
+        "friction_torque_Nm": st["drive_torque_Nm"],
+        "hydraulic_torque_Nm": hyd.total_Nm if hyd else 0.0,
+        "total_torque_Nm": st["drive_torque_Nm"] + (hyd.total_Nm if hyd else 0.0),
+        "outer_ring_torque_Nm": st["outer_ring_torque_Nm"],
+        "outer_ring_torque_std_Nm": st["outer_ring_torque_std"],
+        "power_input_W": st["power_input_W"],
+        "power_dissipated_W": st["power_dissipated_W"],
+        "power_balance_error": st["power_balance_error"],
+        "cage_speed_rpm": st["cage_speed_rad_s"] * 30 / math.pi,
+        "cage_slip": 1.0 - st["cage_speed_rad_s"] / wc0 if wc0 else 0.0,
+        "torque_by_contact_Nm": by_contact,
+        "torque_by_mechanism_Nm": by_mech,
+        "power_W": power,
+        "Lambda_min": {c: float(res.series[f"Lambda_min_{c}"][-1]) for c in CONTACTS},
+        "phi_max": {c: float(res.series[f"phi_max_{c}"][-1]) for c in CONTACTS},
+        "hydraulic": hyd.as_dict() if hyd else None,
+        "roller_azimuth_rad": (2 * np.pi * np.arange(Z) / Z).tolist(),
+        **last,
+        "axial_force_N": -float(res.series["ring_force_N"][-1][2]),
+        "ring_displacement_m": res.states[-1][12 * Z + 13:12 * Z + 16].tolist(),
+        "load_residual": None,
+        "converged": res.finished,
+        "runtime_s": res.runtime_s,
+        "lubricant_state": state.as_dict(),
+        "dynamic": {"steady": st, "stats": res.stats, "revolutions": res.revolutions,
+                    "wall_time_per_revolution_s": res.runtime_s / res.revolutions if res.revolutions else None,
+                    "files": files},
+    }
 
 
 def _csv(points: list[dict[str, Any]]) -> str:

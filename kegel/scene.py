@@ -36,6 +36,15 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
     # slices = 30, slice_model = "alternative_slicing", rib_model = "cell", rib_cells = 32,
     # cage = true, solution = "quasi_static", hydraulic = "correlation"
 
+    [dynamic]                                # optional, for solution = "dynamic"
+    duration = "20 ms"                       # simulated time per operating point
+    output_interval = "0.1 ms"               # spacing of the recorded time series
+    speed_profile = [["0 ms", "0 rpm"], ["50 ms", "4000 rpm"]]   # default: the point's speed
+    hold_axial = false                       # hold the inner ring axially (partner bearing)
+    average_fraction = 0.5                   # steady-state averages over the last half
+    tolerance = 1e-7                         # CVODE's relative tolerance
+    checkpoint_interval = "5 ms"             # resume from the last checkpoint after an interrupt
+
     [output]
     directory = "results/32216_table1"       # optional
 """
@@ -59,6 +68,7 @@ from .geometry import BearingGeometry, derive_geometry
 from .units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
+    "DynamicSettings",
     "FIDELITY_PRESETS",
     "Fidelity",
     "Lubrication",
@@ -86,6 +96,8 @@ _ALLOWED: dict[str, set[str]] = {
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
+    "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "average_fraction", "tolerance",
+                "checkpoint_interval"},
     "output": {"directory"},
 }
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
@@ -146,6 +158,68 @@ _CHOICES = {
     "solution": ("quasi_static", "dynamic"),
     "hydraulic": ("none", "correlation", "cfd"),
 }
+
+
+@dataclass(frozen=True)
+class DynamicSettings:
+    """The ``[dynamic]`` table of a scene (SI units; see the module docstring).
+
+    ``speed_profile`` is a tuple of (time_s, speed_rad_s) pairs, or empty for a constant speed at
+    the operating point's speed.
+    """
+
+    duration_s: float = 0.02
+    output_interval_s: float = 1e-4
+    speed_profile: tuple[tuple[float, float], ...] = ()
+    hold_axial: bool = False
+    average_fraction: float = 0.5
+    tolerance: float = 1e-7
+    checkpoint_interval_s: float = 5e-3
+
+    def as_dict(self) -> dict[str, Any]:
+        """Plain dictionary, written next to every result."""
+        d = dict(self.__dict__)
+        d["speed_profile"] = [list(p) for p in self.speed_profile]
+        return d
+
+
+def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
+    kw: dict[str, Any] = {}
+    for key, attr in (("duration", "duration_s"), ("output_interval", "output_interval_s"),
+                      ("checkpoint_interval", "checkpoint_interval_s")):
+        if key in table:
+            v = reader.quantity(table[key], "time", f"dynamic.{key}")
+            if not v > 0:
+                raise reader.error(f"dynamic.{key}", table[key], "a time > 0")
+            kw[attr] = v
+    if kw.get("output_interval_s", 1e-4) > kw.get("duration_s", 0.02):
+        raise reader.error("dynamic.output_interval", table.get("output_interval"), "at most the duration")
+    if "hold_axial" in table:
+        if not isinstance(table["hold_axial"], bool):
+            raise reader.error("dynamic.hold_axial", table["hold_axial"], "true or false")
+        kw["hold_axial"] = table["hold_axial"]
+    for key, lo, hi in (("average_fraction", 0.0, 1.0), ("tolerance", 1e-12, 1e-3)):
+        if key in table:
+            v = table[key]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (lo < v <= hi):
+                raise reader.error(f"dynamic.{key}", v, f"a number in ({lo:g}, {hi:g}]")
+            kw[key] = float(v)
+    if "speed_profile" in table:
+        prof = table["speed_profile"]
+        if not isinstance(prof, list) or not prof:
+            raise reader.error("dynamic.speed_profile", prof, 'a list of ["time", "speed"] pairs')
+        pts = []
+        for i, pair in enumerate(prof):
+            if not (isinstance(pair, list) and len(pair) == 2):
+                raise reader.error(f"dynamic.speed_profile[{i}]", pair, 'a pair ["10 ms", "2000 rpm"]')
+            t = reader.quantity(pair[0], "time", f"dynamic.speed_profile[{i}][0]")
+            w = parse_quantity(pair[1], "speed", source=reader.src("dynamic.speed_profile"),
+                               key=f"dynamic.speed_profile[{i}][1]")
+            if pts and not t > pts[-1][0]:
+                raise reader.error(f"dynamic.speed_profile[{i}][0]", pair[0], "times increasing along the profile")
+            pts.append((t, w))
+        kw["speed_profile"] = tuple(pts)
+    return DynamicSettings(**kw)
 
 
 @dataclass(frozen=True)
@@ -227,6 +301,7 @@ class Scene:
     fidelity: Fidelity
     output_directory: Path
     resolved: dict[str, Any] = field(repr=False, compare=False)
+    dynamic: DynamicSettings = field(default_factory=DynamicSettings)
 
     @cached_property
     def geometry(self) -> BearingGeometry:
@@ -515,6 +590,7 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
     points, swept = _operating_points(reader, raw["operating"], bearing)
     lubrication = _lubrication(reader, raw["lubrication"], bearing)
     fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
+    dynamic = _dynamic(reader, raw.get("dynamic", {}))
 
     stem = Path(str(source)).stem if str(source) != "<dict>" else "scene"
     out = raw.get("output", {}).get("directory", f"results/{stem}")
@@ -534,6 +610,7 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
         fidelity=fidelity,
         output_directory=Path(out),
         resolved=raw,
+        dynamic=dynamic,
     )
 
 

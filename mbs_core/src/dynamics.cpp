@@ -73,6 +73,7 @@ RingKin ring_kin(const DynamicModel& m, const RingDrive& drive, double t, const 
 struct RollerAcc {  // accumulators of one evaluation (outputs)
   double P[3][5] = {};
   double damping_W = 0.0, cage_W = 0.0, external_W = 0.0;
+  double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
   double contact_W = 0.0;  // work rate of all contact forces on the pair (dissipation + elastic energy rate)
   double torque[3] = {0, 0, 0};
   double max_pen = 0.0;
@@ -183,6 +184,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
           acc->P[k][BearingFriction::kHysteresis] += s.M_hysteresis_Nm * rate;
         }
         acc->damping_W += s.F_damping_N * in.normal_velocity_m_s;
+        acc->Lmin[k] = std::min(acc->Lmin[k], s.Lambda);
+        acc->phimax[k] = std::max(acc->phimax[k], s.phi);
       }
       if (ro && i == mid) (outer ? ro->sliding_outer_m_s : ro->sliding_inner_m_s) = in.u1_x_m_s - in.u2_x_m_s;
     }
@@ -232,6 +235,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
         acc->P[DynamicOutputs::kRib][BearingFriction::kEhlSliding] += s.P_ehl_sliding_W;
         acc->P[DynamicOutputs::kRib][BearingFriction::kSolidSliding] += s.P_solid_sliding_W;
         acc->damping_W += Fd * v_app;
+        acc->Lmin[DynamicOutputs::kRib] = std::min(acc->Lmin[DynamicOutputs::kRib], s.Lambda);
+        acc->phimax[DynamicOutputs::kRib] = std::max(acc->phimax[DynamicOutputs::kRib], s.phi);
       }
     }
   }
@@ -607,6 +612,8 @@ int dynamic_rhs(const DynamicModel& m, DynamicData& d, const RingDrive& drive, d
     out->inner_speed_rad_s = ring.omega;
     out->cage_speed_rad_s = cage.w.z();
     for (int k = 0; k < 3; ++k) {
+      out->Lambda_min[k] = acc.Lmin[k] > 1e299 ? 0.0 : acc.Lmin[k];
+      out->phi_max[k] = acc.phimax[k];
       out->torque_by_contact_Nm[k] = acc.torque[k];
       for (int q = 0; q < 5; ++q) out->power_W[k][q] = acc.P[k][q];
     }
@@ -912,7 +919,9 @@ int DynamicSimulation::advance(double t_end) noexcept {
 
 std::vector<double> DynamicSimulation::quadratures() const {
   realtype t = 0.0;
-  CVodeGetQuad(impl_->cvode, &t, impl_->yQ);
+  long n = 0;
+  CVodeGetNumSteps(impl_->cvode, &n);
+  if (n == 0 || CVodeGetQuad(impl_->cvode, &t, impl_->yQ) < 0) return q0_;  // before the first step
   const double* q = N_VGetArrayPointer(impl_->yQ);
   std::vector<double> r(q, q + kQuadratureCount);
   for (int i = 0; i < kQuadratureCount; ++i) r[i] += q0_[i];

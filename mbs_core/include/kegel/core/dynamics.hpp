@@ -186,6 +186,8 @@ struct DynamicOutputs {
   double outer_ring_torque_Nm = 0.0;  ///< moment of the roller forces on the outer ring about z
   double torque_by_contact_Nm[3] = {0, 0, 0};  ///< outer raceway (on the cup), inner raceway and rib (on the cone, negated)
   double power_W[3][5] = {};          ///< by contact and mechanism (BearingFriction's order)
+  double Lambda_min[3] = {0, 0, 0};   ///< smallest film parameter (Eq. 30) of each contact's slices
+  double phi_max[3] = {0, 0, 0};      ///< largest asperity load ratio (Eq. 29)
   double damping_power_W = 0.0;
   double cage_power_W = 0.0;          ///< friction in the cage windows (Eq. 37)
   double external_power_W = 0.0;      ///< power the force elements take from the bodies
