@@ -41,7 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
-from kegel.geometry import BearingGeometry
+from kegel.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO, BearingGeometry
 
 from .mesh import write_msh22
 
@@ -49,9 +49,6 @@ __all__ = ["MESH_LEVELS", "CfdGeometry", "cfd_geometry", "build_mesh", "roller_n
 
 GAP_RATIO = 0.08
 SMALL_RIB_RATIO = 0.35
-CAGE_OFFSET_RATIO = 0.25
-CAGE_THICKNESS_RATIO = 0.08
-CAGE_OVERHANG_RATIO = 0.12
 HOUSING_CLEARANCE_RATIO = 0.25
 
 #: Mesh levels: cell size far from walls and at the walls of the narrow gaps, as fractions of D_w.

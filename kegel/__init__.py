@@ -11,6 +11,7 @@ from importlib.metadata import PackageNotFoundError, version as _pkg_version
 
 from . import _core
 from . import contact
+from .dynamics import DynamicResult, SimulationDiverged, simulate
 from .data import (
     BearingData,
     LubricantData,
@@ -40,6 +41,7 @@ __all__ = [
     "BearingData",
     "BearingGeometry",
     "ContactFriction",
+    "DynamicResult",
     "FrictionData",
     "KegelInputError",
     "LubricantData",
@@ -47,6 +49,7 @@ __all__ = [
     "MaterialData",
     "OperatingPoint",
     "Scene",
+    "SimulationDiverged",
     "apex_residual",
     "available_bearings",
     "available_lubricants",
@@ -61,4 +64,5 @@ __all__ = [
     "load_scene",
     "lubricant_state",
     "parse_quantity",
+    "simulate",
 ]

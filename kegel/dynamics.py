@@ -52,14 +52,9 @@ __all__ = [
 #: damping does not hide dynamics). Listed with verify = true in kegel/data/friction.
 DAMPING_TIME_S = 2.5e-6
 
-# Cage geometry: the pressed-steel window cage of kegel.cfd_cases.geometry (its mid-surface
-# CAGE_OFFSET_RATIO * D_w outside the roller axes, thickness CAGE_THICKNESS_RATIO * D_w, side
-# rings CAGE_OVERHANG_RATIO * L beyond the roller ends); the window edges touch the roller on
-# the shell's inner face.
-from .cfd_cases.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO  # noqa: E402
-
-#: Inner-ring mass when the scene gives none: the ring itself plus nothing of the shaft [kg];
-#: computed from the ring's section in :func:`ring_mass_kg`.
+# Cage geometry: kegel.geometry's pressed-steel window cage; the window edges touch the roller
+# on the shell's inner face.
+from .geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO  # noqa: E402
 
 
 class SimulationDiverged(RuntimeError):
@@ -388,9 +383,12 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     grid = grid[grid > t_start + 1e-15] if times else grid
     prog = _Progress(t_start, duration_s, progress)
     finished, message, last_ck = True, "", t_start
+    integration_s = 0.0
     for tk in grid:
         if tk > sim.time_s:
+            t_int = time.perf_counter()
             flag = sim.advance(float(tk))
+            integration_s += time.perf_counter() - t_int
             if flag != 0:
                 finished, message = False, sim.message
                 break
@@ -421,7 +419,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         series.update(_interval_means(t, Q))
     if finished and ck is not None:
         ck.unlink(missing_ok=True)
-    stats = {"initial_state": initial, "resumed_from_s": resumed_from, "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
+    stats = {"initial_state": initial, "resumed_from_s": resumed_from, "integration_wall_s": integration_s,
+             "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
              "slices": slices, "method": method, "cage": cage, "rtol": rtol}
     steady = _steady(t, series, Q, average_fraction) if len(t) > 1 else {}

@@ -63,6 +63,15 @@ __all__ = [
 ]
 
 
+#: The pressed-steel window cage (assumed shape; the bearing tables give none), shared by the
+#: dynamic model (mass, inertia, window edges: kegel.dynamics) and the CFD geometry
+#: (kegel.cfd_cases.geometry): a conical shell parallel to the roller axes, its mid-surface
+#: CAGE_OFFSET_RATIO * D_w outside them (toward the cup, as in pressed-steel TRB cages), thickness
+#: CAGE_THICKNESS_RATIO * D_w, side rings CAGE_OVERHANG_RATIO * L beyond the roller ends.
+CAGE_OFFSET_RATIO = 0.25
+CAGE_THICKNESS_RATIO = 0.08
+CAGE_OVERHANG_RATIO = 0.12
+
 @dataclass(frozen=True)
 class BearingGeometry:
     """Derived internal geometry of a tapered roller bearing (SI units, frame ``B``).

@@ -147,7 +147,8 @@ void bind_dynamics(nb::module_& parent) {
       .def_rw("atol_rate_rad_s", &IntegratorSettings::atol_rate_rad_s)
       .def_rw("max_step_s", &IntegratorSettings::max_step_s)
       .def_rw("max_steps", &IntegratorSettings::max_steps)
-      .def_rw("coloured_jacobian", &IntegratorSettings::coloured_jacobian);
+      .def_rw("coloured_jacobian", &IntegratorSettings::coloured_jacobian)
+      .def_rw("absolute_velocity_tolerance", &IntegratorSettings::absolute_velocity_tolerance);
   nb::class_<ForceElement>(m, "ForceElement");
   nb::class_<DragElementValues>(m, "DragElementValues")
       .def(nb::init<>())

@@ -11,6 +11,8 @@
 namespace {
 std::atomic<long> g_news{0};
 }
+// for the other test files of this binary (test_dynamics.cpp)
+long kegel_test_allocation_count() { return g_news.load(); }
 void* operator new(std::size_t n) {
   g_news.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(n)) return p;

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "kegel/core/hertz.hpp"
 #include "kegel/core/quasi_static.hpp"
 #include "kegel/core/slice.hpp"
 
@@ -150,6 +151,9 @@ class DynamicModel {
   int cage_offset() const noexcept { return 12 * roller_count(); }
   int ring_offset() const noexcept { return 12 * roller_count() + 13; }
   double pocket_damping_Ns_m() const noexcept { return d_pocket_; }
+  /// The rib's Hertz contact at interference delta (scaled from one evaluation: the rib's radii
+  /// are fixed, so Q ~ delta^1.5 and the semi-axes ~ delta^0.5).
+  HertzEllipse rib_contact(double delta_m) const noexcept;
   double rib_damping_Ns_m() const noexcept { return d_rib_; }
   /// Nominal pose of pocket k in the cage's axes: centre, circumferential and axis directions.
   void pocket_frame(int k, Eigen::Vector3d& centre, Eigen::Vector3d& e_x, Eigen::Vector3d& e_y,
@@ -164,6 +168,7 @@ class DynamicModel {
   SurfacePair race_, rib_;
   ContactLubricantState lub_;
   double d_pocket_ = 0.0, d_rib_ = 0.0;
+  HertzEllipse rib_ref_;
 };
 
 /// Per-roller outputs of one evaluation.
@@ -249,6 +254,10 @@ struct IntegratorSettings {
   double max_step_s = 0.0;           ///< 0: no limit
   long max_steps = 200000;           ///< per advance() call
   bool coloured_jacobian = true;     ///< false: CVODE's own difference quotients (every column)
+  /// Velocities and rates under absolute tolerances only (atol_velocity_m_s, atol_rate_rad_s):
+  /// the friction follows the sliding speed, whose error a relative tolerance on the orbital
+  /// speed would not bound.
+  bool absolute_velocity_tolerance = true;
 };
 
 /// Quadratures (time integrals along the solution) the simulation keeps, in this order:
