@@ -24,6 +24,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import kegel  # noqa: E402
 from kegel.dynamics import simulate  # noqa: E402
 from kegel.quasi_static import bearing_friction  # noqa: E402
+from kegel.io import provenance  # noqa: E402
 from kegel.tribology import load_friction  # noqa: E402
 
 OUT = Path(__file__).resolve().parent / "results"
@@ -82,7 +83,7 @@ def main() -> None:
     OUT.mkdir(exist_ok=True)
     doc = {"case": "32216, Fa = 6 kN, 50 degC, FVA3, 2000 rpm, one revolution from the quasi-static state, "
                    "mean over the last half", "finest": FINEST[0], "one_core": True, "rows": rows,
-           "provenance": kegel.io.provenance() if hasattr(kegel, "io") else {}}
+           "provenance": provenance()}
     tmp = OUT / ".dynamics.json.tmp"
     tmp.write_text(json.dumps(doc, indent=2) + "\n")
     os.replace(tmp, OUT / "dynamics.json")

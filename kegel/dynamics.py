@@ -45,11 +45,9 @@ __all__ = [
     "simulate",
 ]
 
-#: Stiffness-proportional contact damping, d = tau * k (Eq. 2's d_max from the contact stiffness
-#: at delta_max). Rolling bearings damp with d = (0.25 ... 2.5) 1e-5 s x their stiffness
-#: (E. Kraemer, Dynamics of Rotors and Foundations, Springer 1993, Sec. on rolling bearings; the
-#: rule quoted for rotor dynamics); kegel takes the lower end (the least damping, so the
-#: damping does not hide dynamics). Listed with verify = true in kegel/data/friction.
+#: Stiffness-proportional contact damping time when the friction file gives none: d_max = tau x
+#: the contact stiffness at delta_max (Eq. 2). The value and its source (Kraemer) live in
+#: kegel/data/friction/steel_mineral_oil.toml, [damping] damping_time_us.
 DAMPING_TIME_S = 2.5e-6
 
 # Cage geometry: kegel.geometry's pressed-steel window cage; the window edges touch the roller
@@ -95,15 +93,21 @@ def cage_mass_properties(g: BearingGeometry, density_kg_m3: float) -> tuple[floa
 def ring_mass_kg(g: BearingGeometry, bearing: BearingData, density_kg_m3: float) -> float:
     """Mass of the inner ring (cone): the ring between the bore and the raceway's mean diameter
     over the cone width B."""
-    d_in = bearing.bore_diameter_m
-    d_out = g.inner_raceway_diameter_mid_m
+    return ring_mass_properties(g, bearing, density_kg_m3)[0]
+
+
+def ring_mass_properties(g: BearingGeometry, bearing: BearingData, density_kg_m3: float) -> tuple[float, float, float]:
+    """Mass, axial and transverse inertia (about its centre) of the inner ring as a hollow
+    cylinder between the bore and the raceway's mean diameter over the cone width B."""
+    ri, ro = 0.5 * bearing.bore_diameter_m, 0.5 * g.inner_raceway_diameter_mid_m
     B = bearing.cone_width_m
-    return density_kg_m3 * math.pi / 4 * (d_out ** 2 - d_in ** 2) * B
+    mass = density_kg_m3 * math.pi * (ro ** 2 - ri ** 2) * B
+    return mass, 0.5 * mass * (ri ** 2 + ro ** 2), mass * (3 * (ri ** 2 + ro ** 2) + B ** 2) / 12
 
 
 def dynamic_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction, *,
                   temperature_K: float, slices: int = 20, method: str = "independent", cage: bool = True,
-                  cage_points: int = 4, damping_time_s: float = DAMPING_TIME_S, ring_mass: float | None = None,
+                  cage_points: int = 4, damping_time_s: float | None = None, ring_mass: float | None = None,
                   gravity_m_s2: Sequence[float] = (0.0, 0.0, 0.0)) -> tuple["D.DynamicModel", Any]:
     """The C++ dynamic model and its quasi-static bearing model (for the initial state)."""
     qs_model = bearing_model(g, bearing, material, slices=slices, method=method)
@@ -123,8 +127,11 @@ def dynamic_model(g: BearingGeometry, bearing: BearingData, material: MaterialDa
     v.cage_pitch_radius_m = 0.5 * g.cage_pitch_diameter_m
     v.cage_pocket_clearance_m = g.cage_pocket_clearance_circumferential_m
     v.cage_pocket_axial_clearance_m = g.cage_pocket_clearance_axial_m
-    v.ring_mass_kg = ring_mass if ring_mass is not None else ring_mass_kg(g, bearing, material.density_kg_m3)
-    v.damping_time_s = damping_time_s
+    mr, Iar, Itr = ring_mass_properties(g, bearing, material.density_kg_m3)
+    v.ring_mass_kg = ring_mass if ring_mass is not None else mr
+    v.ring_inertia_axial_kgm2, v.ring_inertia_transverse_kgm2 = Iar, Itr
+    v.damping_time_s = (damping_time_s if damping_time_s is not None
+                        else (friction.damping_time_s or DAMPING_TIME_S))
     v.gravity_m_s2 = np.asarray(gravity_m_s2, dtype=float)
     v.cage_points = cage_points
     v.cage = cage
@@ -249,10 +256,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              misalignment_rad: float = 0.0, slices: int = 20, method: str = "independent", cage: bool = True,
              output_interval_s: float = 1e-4, average_fraction: float = 0.5, rtol: float = 1e-7,
              atol_velocity_m_s: float = 1e-8,
-             damping_time_s: float = DAMPING_TIME_S, elements: Sequence[Any] = (), progress: bool = False,
+             damping_time_s: float | None = None, elements: Sequence[Any] = (), progress: bool = False,
              checkpoint: str | Path | None = None, checkpoint_interval_s: float = 5e-3,
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
-             raise_on_failure: bool = True, hold_axial: bool = False,
+             raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
+             tilt_moment_Nm: float = 0.0,
              max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "") -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
@@ -276,6 +284,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         A file (.npz) the state is written to every ``checkpoint_interval_s`` (atomically); when it
         exists at the start and was written with the same ``checkpoint_key`` (a fingerprint of the
         inputs), the run resumes from it; a finished run removes it.
+    misalignment_rad, tilt_free, tilt_moment_Nm
+        The inner ring's tilt about y: held at ``misalignment_rad`` (a shaft held by its other
+        bearings), or free from there (``tilt_free``) under ``tilt_moment_Nm``, with the
+        gyroscopic moments of the spinning ring.
     hold_axial
         Hold the inner ring axially where the quasi-static solution put it (the partner bearing
         of an adjusted pair): needed when the axial load cannot hold the rollers in the cup, e.g.
@@ -349,7 +361,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     else:
         drive.free_z = False
     drive.radial_N = radial_N
-    drive.misalignment_y_rad = misalignment_rad
+    drive.tilt_free = tilt_free
+    drive.tilt_moment_y_Nm = tilt_moment_Nm
     st = D.IntegratorSettings()
     st.rtol = rtol
     st.atol_velocity_m_s = atol_velocity_m_s

@@ -178,6 +178,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
                    radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, slices=fid.slices,
                    method=fid.slice_model, cage=fid.cage, output_interval_s=dyn.output_interval_s,
                    average_fraction=dyn.average_fraction, rtol=dyn.tolerance, hold_axial=dyn.hold_axial,
+                   tilt_free=dyn.tilt_free, tilt_moment_Nm=op.tilt_moment_Nm,
                    checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
                    checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
                                               fid.as_dict(), dyn.as_dict()], sort_keys=True),

@@ -41,6 +41,7 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
     output_interval = "0.1 ms"               # spacing of the recorded time series
     speed_profile = [["0 ms", "0 rpm"], ["50 ms", "4000 rpm"]]   # default: the point's speed
     hold_axial = false                       # hold the inner ring axially (partner bearing)
+    tilt_free = false                        # let the inner ring tilt under operating.tilt_moment
     average_fraction = 0.5                   # steady-state averages over the last half
     tolerance = 1e-7                         # CVODE's relative tolerance
     checkpoint_interval = "5 ms"             # resume from the last checkpoint after an interrupt
@@ -97,8 +98,8 @@ _ALLOWED: dict[str, set[str]] = {
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
-    "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "average_fraction", "tolerance",
-                "checkpoint_interval"},
+    "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
+                "tolerance", "checkpoint_interval"},
     "output": {"directory"},
 }
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
@@ -182,6 +183,7 @@ class DynamicSettings:
     output_interval_s: float = 1e-4
     speed_profile: tuple[tuple[float, float], ...] = ()
     hold_axial: bool = False
+    tilt_free: bool = False
     average_fraction: float = 0.5
     tolerance: float = 1e-7
     checkpoint_interval_s: float = 5e-3
@@ -204,10 +206,11 @@ def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
             kw[attr] = v
     if kw.get("output_interval_s", 1e-4) > kw.get("duration_s", 0.02):
         raise reader.error("dynamic.output_interval", table.get("output_interval"), "at most the duration")
-    if "hold_axial" in table:
-        if not isinstance(table["hold_axial"], bool):
-            raise reader.error("dynamic.hold_axial", table["hold_axial"], "true or false")
-        kw["hold_axial"] = table["hold_axial"]
+    for key in ("hold_axial", "tilt_free"):
+        if key in table:
+            if not isinstance(table[key], bool):
+                raise reader.error(f"dynamic.{key}", table[key], "true or false")
+            kw[key] = table[key]
     for key, lo, hi in (("average_fraction", 0.0, 1.0), ("tolerance", 1e-12, 1e-3)):
         if key in table:
             v = table[key]

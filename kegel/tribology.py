@@ -61,6 +61,7 @@ class FrictionData:
     delta_max_m: float
     gold_C1_Pa_K2: float = 0.0
     gold_C2_Pa_K: float = 0.0
+    damping_time_s: float = 0.0   # dynamic model: d_max = damping_time x contact stiffness (Eq. 2)
 
     def core(self, lubricant: LubricantData) -> "_core.tribology.FrictionParameters":
         """Checked C++ parameters, with the limiting shear stress of ``lubricant``."""
@@ -96,6 +97,8 @@ def _load_friction_file(path: Path) -> FrictionData:
         a_v=require_number(hy, "a_v", path, "hysteresis.", nonnegative=True),
         d_max_Ns_m=require_number(da, "d_max_Ns_m", path, "damping.", nonnegative=True),
         delta_max_m=require_number(da, "delta_max_um", path, "damping.", positive=True) * 1e-6,
+        damping_time_s=require_number(da, "damping_time_us", path, "damping.", nonnegative=True) * 1e-6
+        if "damping_time_us" in da else 0.0,
         gold_C1_Pa_K2=require_number(gold, "C1_Pa_K2", path, "compression_heating.", positive=True)
         if gold else 0.0,
         gold_C2_Pa_K=require_number(gold, "C2_Pa_K", path, "compression_heating.", positive=True)

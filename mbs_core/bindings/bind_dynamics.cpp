@@ -76,6 +76,7 @@ nb::dict to_dict(const DynamicOutputs& o) {
   d["max_penetration_m"] = o.max_penetration_m;
   d["contact_work_W"] = o.contact_work_W;
   d["ring_force_N"] = Eigen::Vector3d(o.ring_force_N);
+  d["ring_moment_Nm"] = Eigen::Vector3d(o.ring_moment_Nm);
   const size_t Z = o.rollers.size();
   std::vector<double> qo(Z), qi(Z), qr(Z), qc(Z), spin(Z), so(Z), si(Z), skew(Z), tilt(Z);
   for (size_t j = 0; j < Z; ++j) {
@@ -122,6 +123,8 @@ void bind_dynamics(nb::module_& parent) {
       .def_rw("cage_pocket_axial_clearance_m", &V::cage_pocket_axial_clearance_m)
       .def_rw("cage_edge_height_m", &V::cage_edge_height_m)
       .def_rw("ring_mass_kg", &V::ring_mass_kg)
+      .def_rw("ring_inertia_axial_kgm2", &V::ring_inertia_axial_kgm2)
+      .def_rw("ring_inertia_transverse_kgm2", &V::ring_inertia_transverse_kgm2)
       .def_rw("damping_time_s", &V::damping_time_s)
       .def_rw("gravity_m_s2", &V::gravity_m_s2)
       .def_rw("cage_points", &V::cage_points)
@@ -132,8 +135,9 @@ void bind_dynamics(nb::module_& parent) {
       .def_rw("speed_rad_s", &RingDrive::speed_rad_s)
       .def_rw("axial_N", &RingDrive::axial_N)
       .def_rw("radial_N", &RingDrive::radial_N)
-      .def_rw("misalignment_x_rad", &RingDrive::misalignment_x_rad)
-      .def_rw("misalignment_y_rad", &RingDrive::misalignment_y_rad)
+      .def_rw("tilt_moment_x_Nm", &RingDrive::tilt_moment_x_Nm)
+      .def_rw("tilt_moment_y_Nm", &RingDrive::tilt_moment_y_Nm)
+      .def_rw("tilt_free", &RingDrive::tilt_free)
       .def_rw("free_x", &RingDrive::free_x)
       .def_rw("free_y", &RingDrive::free_y)
       .def_rw("free_z", &RingDrive::free_z)

@@ -40,11 +40,19 @@ struct CageKin {
   Vec3 v_at(const Vec3& x) const noexcept { return v + w.cross(x - p); }
 };
 
+// The inner ring: its frame is frame R displaced by d and tilted by R about the pivot c (on the
+// axis in the roller mid-plane, where the ring's mass centre is taken): a point x_ring of the
+// ring is at c + d + R (x_ring - c).
 struct RingKin {
-  Vec3 d, v, n;  // displacement (origin of the ring frame), velocity, axis
+  Vec3 d, v, n;  // displacement of the pivot, its velocity, the ring's axis
+  Vec3 c;        // pivot in frame R (undisplaced)
+  Vec3 w_tilt;   // angular velocity of the tilt
   Mat3 R;        // tilt
   double omega = 0.0;
-  Vec3 v_at(const Vec3& x) const noexcept { return v + omega * n.cross(x - d); }
+  Vec3 centre() const noexcept { return c + d; }
+  Vec3 to_ring(const Vec3& x) const noexcept { return R.transpose() * (x - c - d) + c; }
+  Vec3 from_ring(const Vec3& x) const noexcept { return R * (x - c) + c + d; }
+  Vec3 v_at(const Vec3& x) const noexcept { return v + (omega * n + w_tilt).cross(x - c - d); }
 };
 
 CageKin cage_kin(const DynamicModel& m, const double* y) noexcept {
@@ -60,12 +68,13 @@ CageKin cage_kin(const DynamicModel& m, const double* y) noexcept {
 RingKin ring_kin(const DynamicModel& m, const RingDrive& drive, double t, const double* y) noexcept {
   const double* r = y + m.ring_offset();
   RingKin k;
-  k.R = (Eigen::AngleAxisd(drive.misalignment_x_rad, Vec3::UnitX()) *
-         Eigen::AngleAxisd(drive.misalignment_y_rad, Vec3::UnitY()))
-            .toRotationMatrix();
+  const Mat3 Rx = Eigen::AngleAxisd(r[6], Vec3::UnitX()).toRotationMatrix();
+  k.R = Rx * Eigen::AngleAxisd(r[7], Vec3::UnitY()).toRotationMatrix();
   k.n = k.R * Vec3::UnitZ();
+  k.c = Vec3(0.0, 0.0, m.bearing().values().roller_mid_z_m);
   k.d = Vec3(r[0], r[1], r[2]);
   k.v = Vec3(r[3], r[4], r[5]);
+  k.w_tilt = r[8] * Vec3::UnitX() + r[9] * Rx.col(1);
   k.omega = drive.speed(t);
   return k;
 }
@@ -102,7 +111,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
   auto v_frame = [&](const Vec3& x) { return Vec3(w_orb * Vec3(-x.y(), x.x(), 0.0)); };
   Vec3 F = Vec3::Zero(), T = Vec3::Zero();       // on the roller, about p
   Vec3 Fc = Vec3::Zero(), Tc = Vec3::Zero();     // on the cage, about its centre
-  Vec3 Fr = Vec3::Zero();                        // on the inner ring
+  Vec3 Fr = Vec3::Zero(), Tr = Vec3::Zero();     // on the inner ring, about its pivot
   const RollerShape shape{bv.roller_mean_radius_m, bv.roller_half_angle_rad, bv.roller_length_m};
   const int n = bv.slices;
   const double wslice = m.bearing().outer_line().width_m();
@@ -115,7 +124,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
   // raceways: side 0 = outer (fixed cup), side 1 = inner (driven cone)
   for (int side = 0; side < 2; ++side) {
     const bool outer = side == 0;
-    const Vec3 Ml = outer ? M : Vec3(ring.R.transpose() * (M - ring.d));
+    const Vec3 Ml = outer ? M : ring.to_ring(M);
     const Vec3 al = outer ? a : Vec3(ring.R.transpose() * a);
     raceway_slice_geometry(shape, m.bearing().profile(), Ml, al,
                            {bv.apex_z_m, outer ? bv.cup_angle_rad : bv.cone_angle_rad},
@@ -142,7 +151,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       if (!(q > 0.0)) continue;
       SliceGeometry g = geo[i];
       if (!outer) {
-        g.p_RC = ring.R * g.p_RC + ring.d;
+        g.p_RC = ring.from_ring(g.p_RC);
         g.n_R = ring.R * g.n_R;
         g.t_roll_R = ring.R * g.t_roll_R;
         g.t_line_R = ring.R * g.t_line_R;
@@ -166,14 +175,17 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       const Vec3 fn = fn_mag * g.n_R;
       F += ft + fn;
       T += (g.p_RC - p).cross(ft) + (pn - p).cross(fn);
-      if (!outer) Fr -= ft + fn;
+      if (!outer) {
+        Fr -= ft + fn;
+        Tr -= (g.p_RC - ring.centre()).cross(ft) + (pn - ring.centre()).cross(fn);
+      }
       if (acc) {
         const Vec3 vo_t = outer ? Vec3::Zero() : ring.v_at(g.p_RC), vo_n = outer ? Vec3::Zero() : ring.v_at(pn);
         acc->contact_W -= ft.dot(v_roller(g.p_RC) - vo_t) + fn.dot(v_roller(pn) - vo_n);
       }
       if (acc) {
         const double tz = outer ? (g.p_RC.cross(-ft) + pn.cross(-fn)).dot(Vec3::UnitZ())
-                                : -((g.p_RC - ring.d).cross(-ft) + (pn - ring.d).cross(-fn)).dot(ring.n);
+                                : -((g.p_RC - ring.centre()).cross(-ft) + (pn - ring.centre()).cross(-fn)).dot(ring.n);
         acc->torque[k] += tz;
         acc->P[k][BearingFriction::kEhlSliding] += s.P_ehl_sliding_W;
         acc->P[k][BearingFriction::kSolidSliding] += s.P_solid_sliding_W;
@@ -193,7 +205,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
 
   // rib: one elliptic Hertz contact with its friction (Eq. 31-35)
   {
-    const Vec3 Mi = ring.R.transpose() * (M - ring.d), ai = ring.R.transpose() * a;
+    const Vec3 Mi = ring.to_ring(M), ai = ring.R.transpose() * a;
     Vec3 pc, nc;
     const double gmin = m.bearing().rib_closest(Mi, ai, pc, nc);
     if (ro) ro->rib_N = 0.0;
@@ -201,8 +213,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       if (-gmin > kMaxInterference_m) return 1;
       max_pen = std::max(max_pen, -gmin);
       const HertzEllipse hz = m.rib_contact(-gmin);
-      const Vec3 pw = ring.R * pc + ring.d, nw = ring.R * nc;
-      Vec3 troll = ring.n.cross(pw - ring.d);
+      const Vec3 pw = ring.from_ring(pc), nw = ring.R * nc;
+      Vec3 troll = ring.n.cross(pw - ring.centre());
       troll -= troll.dot(nw) * nw;
       const double tn = troll.norm();
       if (tn > 0.0) troll /= tn;
@@ -227,10 +239,11 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       F += ft + fn;
       T += (pw - p).cross(ft + fn);
       Fr -= ft + fn;
+      Tr -= (pw - ring.centre()).cross(ft + fn);
       if (acc) acc->contact_W -= (ft + fn).dot(v_roller(pw) - ring.v_at(pw));
       if (ro) ro->rib_N = hz.load_N;
       if (acc) {
-        acc->torque[DynamicOutputs::kRib] += -((pw - ring.d).cross(-(ft + fn))).dot(ring.n);
+        acc->torque[DynamicOutputs::kRib] += -((pw - ring.centre()).cross(-(ft + fn))).dot(ring.n);
         acc->P[DynamicOutputs::kRib][BearingFriction::kEhlSliding] += s.P_ehl_sliding_W;
         acc->P[DynamicOutputs::kRib][BearingFriction::kSolidSliding] += s.P_solid_sliding_W;
         acc->damping_W += Fd * v_app;
@@ -334,7 +347,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
   d.on_roller[j].moment_Nm = T;
   d.on_cage[j].force_N = Fc;
   d.on_cage[j].moment_Nm = Tc;
-  d.on_ring[j] = Fr;
+  d.on_ring[j].force_N = Fr;
+  d.on_ring[j].moment_Nm = Tr;
   if (acc) acc->max_pen = std::max(acc->max_pen, max_pen);
   if (ro) {
     ro->spin_rad_s = (w - cage.w).dot(a);
@@ -397,8 +411,12 @@ void cage_derivative(const DynamicModel& m, const double* yc, const Vec3& F, con
   }
 }
 
-void ring_derivative(const DynamicModel& m, const RingDrive& drive, const double* yi, const Vec3& F_rollers,
-                     double* f) noexcept {
+// Translation: m d'' = F. Tilt (small angles a = rx, b = ry; n = (b, -a, 1)): the angular
+// momentum I_a w n + I_t (a', b', 0) of the spinning ring gives
+//   I_t a'' = M_x - I_a (w b' + w' b),   I_t b'' = M_y + I_a (w a' + w' a)
+// (the gyroscopic moments), about the pivot; the spin itself is prescribed.
+void ring_derivative(const DynamicModel& m, const RingDrive& drive, double t, const double* yi, const Vec3& F_rollers,
+                     const Vec3& M_rollers, double* f) noexcept {
   const auto& v = m.values();
   const bool free_[3] = {drive.free_x, drive.free_y, drive.free_z};
   const Vec3 Fext(drive.radial_N, 0.0, -drive.axial_N);
@@ -406,6 +424,17 @@ void ring_derivative(const DynamicModel& m, const RingDrive& drive, const double
   for (int i = 0; i < 3; ++i) {
     f[i] = free_[i] ? yi[3 + i] : 0.0;
     f[3 + i] = free_[i] ? acc[i] : 0.0;
+  }
+  if (drive.tilt_free) {
+    const double w = drive.speed(t), wd = drive.acceleration(t);
+    const double Ia = v.ring_inertia_axial_kgm2, It = v.ring_inertia_transverse_kgm2;
+    const double Mx = M_rollers.x() + drive.tilt_moment_x_Nm, My = M_rollers.y() + drive.tilt_moment_y_Nm;
+    f[6] = yi[8];
+    f[7] = yi[9];
+    f[8] = (Mx - Ia * (w * yi[9] + wd * yi[7])) / It;
+    f[9] = (My + Ia * (w * yi[8] + wd * yi[6])) / It;
+  } else {
+    f[6] = f[7] = f[8] = f[9] = 0.0;
   }
 }
 
@@ -509,6 +538,8 @@ const DynamicValues& validated(const DynamicValues& v) {
   require_nonnegative(o, "cage_pocket_axial_clearance_m", v.cage_pocket_axial_clearance_m);
   require_nonnegative(o, "cage_edge_height_m", v.cage_edge_height_m);
   require_positive(o, "ring_mass_kg", v.ring_mass_kg);
+  require_positive(o, "ring_inertia_axial_kgm2", v.ring_inertia_axial_kgm2);
+  require_positive(o, "ring_inertia_transverse_kgm2", v.ring_inertia_transverse_kgm2);
   require_nonnegative(o, "damping_time_s", v.damping_time_s);
   if (!v.gravity_m_s2.allFinite()) fail(o, "gravity_m_s2", v.gravity_m_s2.norm(), "finite components");
   if (v.cage_points < 2 || v.cage_points > 50) fail(o, "cage_points", v.cage_points, "2..50");
@@ -589,9 +620,9 @@ DynamicData::DynamicData(const DynamicModel& model) {
   outer_lines.assign(Z, LineContactData(model.bearing().outer_line()));
   on_roller.assign(Z, Wrench{});
   on_cage.assign(Z, Wrench{});
-  on_ring.assign(Z, Vec3::Zero());
+  on_ring.assign(Z, Wrench{});
   base_cage.assign(Z, Wrench{});
-  base_ring.assign(Z, Vec3::Zero());
+  base_ring.assign(Z, Wrench{});
   geo.assign(bv.slices, SliceGeometry{});
   e.assign(bv.slices, 0.0);
   xi.resize(bv.slices);
@@ -609,19 +640,20 @@ int dynamic_rhs(const DynamicModel& m, DynamicData& d, const RingDrive& drive, d
   RollerAcc acc;
   RollerAcc* pacc = out ? &acc : nullptr;
   if (out) out->rollers.resize(Z);
-  Vec3 Fc = Vec3::Zero(), Tc = Vec3::Zero(), Fr = Vec3::Zero();
+  Vec3 Fc = Vec3::Zero(), Tc = Vec3::Zero(), Fr = Vec3::Zero(), Tr = Vec3::Zero();
   for (int j = 0; j < Z; ++j) {
     const int st = eval_roller(m, d, j, t, y + 12 * j, cage, ring, out ? &out->rollers[j] : nullptr, pacc);
     if (st != 0) return st;
     roller_derivative(m, y + 12 * j, d.on_roller[j], ydot + 12 * j);
     Fc += d.on_cage[j].force_N;
     Tc += d.on_cage[j].moment_Nm;
-    Fr += d.on_ring[j];
+    Fr += d.on_ring[j].force_N;
+    Tr += d.on_ring[j].moment_Nm;
   }
   const int st = external_on_cage(m, d, t, cage, ring.omega, Fc, Tc, pacc ? &pacc->external_W : nullptr);
   if (st != 0) return st;
   cage_derivative(m, y + m.cage_offset(), Fc, Tc, ydot + m.cage_offset());
-  ring_derivative(m, drive, y + m.ring_offset(), Fr, ydot + m.ring_offset());
+  ring_derivative(m, drive, t, y + m.ring_offset(), Fr, Tr, ydot + m.ring_offset());
   if (out) {
     const auto& v = m.values();
     out->time_s = t;
@@ -642,6 +674,7 @@ int dynamic_rhs(const DynamicModel& m, DynamicData& d, const RingDrive& drive, d
     out->max_penetration_m = acc.max_pen;
     out->contact_work_W = acc.contact_W;
     out->ring_force_N = Fr;
+    out->ring_moment_Nm = Tr;
     double E = 0.0;
     for (int j = 0; j < Z; ++j) {
       const double* yr = y + 12 * j;
@@ -657,7 +690,8 @@ int dynamic_rhs(const DynamicModel& m, DynamicData& d, const RingDrive& drive, d
          0.5 * (v.cage_inertia_transverse_kgm2 * (wb.x() * wb.x() + wb.y() * wb.y()) +
                 v.cage_inertia_axial_kgm2 * wb.z() * wb.z());
     const double* yi = y + m.ring_offset();
-    E += 0.5 * v.ring_mass_kg * Vec3(yi[3], yi[4], yi[5]).squaredNorm();
+    E += 0.5 * v.ring_mass_kg * Vec3(yi[3], yi[4], yi[5]).squaredNorm() +
+         0.5 * v.ring_inertia_transverse_kgm2 * (yi[8] * yi[8] + yi[9] * yi[9]);
     out->kinetic_energy_J = E;
   }
   for (int i = 0, N = m.state_size(); i < N; ++i)
@@ -706,16 +740,21 @@ int dynamic_jacobian(const DynamicModel& m, DynamicData& d, const RingDrive& dri
           Jc[oc + 10 + r] = dT[r] / Ib[r];
         }
       }
-      const Vec3 dFr = (d.on_ring[j] - base_ring[j]) / h;
+      const Vec3 dFr = (d.on_ring[j].force_N - base_ring[j].force_N) / h;
       for (int r = 0; r < 3; ++r)
         if (free_[r]) Jc[oi + 3 + r] = dFr[r] / v.ring_mass_kg;
+      if (drive.tilt_free) {
+        const Vec3 dMr = (d.on_ring[j].moment_Nm - base_ring[j].moment_Nm) / h;
+        Jc[oi + 8] = dMr.x() / v.ring_inertia_transverse_kgm2;
+        Jc[oi + 9] = dMr.y() / v.ring_inertia_transverse_kgm2;
+      }
       yp[col] = y[col];
     }
   }
   // cage and ring columns, one by one
   for (int col = oc; col < N; ++col) {
     const int local = col < oi ? (col - oc < 3 ? 0 : col - oc < 7 ? 3 : col - oc < 10 ? 6 : 9)
-                               : (col - oi < 3 ? 0 : 6);
+                               : (col - oi < 3 ? 0 : col - oi < 6 ? 6 : col - oi < 8 ? 3 : 9);
     const double h = perturbation(local, y[col]);
     yp[col] = y[col] + h;
     st = dynamic_rhs(m, d, drive, t, yp, fp, nullptr);
@@ -753,8 +792,16 @@ std::vector<double> initial_state(const DynamicModel& m, const BearingData& qs, 
   c[2] = m.bearing().values().roller_mid_z_m;
   c[3] = 1.0;
   c[12] = cage_speed;
+  // the quasi-static ring pose turns about the origin of frame R: x = R x_ring + d_qs; here about
+  // the pivot c: x = R (x_ring - c) + c + d, so d = d_qs + R c - c
   double* ri = y.data() + m.ring_offset();
-  for (int i = 0; i < 3; ++i) ri[i] = qs.ring[i];
+  const Mat3 R = (Eigen::AngleAxisd(qs.ring[3], Vec3::UnitX()) * Eigen::AngleAxisd(qs.ring[4], Vec3::UnitY()))
+                     .toRotationMatrix();
+  const Vec3 pivot(0.0, 0.0, m.bearing().values().roller_mid_z_m);
+  const Vec3 dd = Vec3(qs.ring[0], qs.ring[1], qs.ring[2]) + R * pivot - pivot;
+  for (int i = 0; i < 3; ++i) ri[i] = dd[i];
+  ri[6] = qs.ring[3];
+  ri[7] = qs.ring[4];
   return y;
 }
 
@@ -884,6 +931,12 @@ DynamicSimulation::DynamicSimulation(std::shared_ptr<const DynamicModel> model, 
   for (int j = 0; j < model_->roller_count(); ++j) set_block(12 * j, 3, 3, 3, 3);
   set_block(model_->cage_offset(), 3, 4, 3, 3);
   set_block(model_->ring_offset(), 3, 0, 3, 0);
+  {  // tilt angles and rates
+    const int o = model_->ring_offset() + 6;
+    av[o] = av[o + 1] = s.atol_axis;
+    av[o + 2] = av[o + 3] = s.atol_rate_rad_s;
+    if (s.absolute_velocity_tolerance) impl_->rel[o + 2] = impl_->rel[o + 3] = 0.0;
+  }
   impl_->cvode = CVodeCreate(CV_BDF, impl_->ctx);
   if (!impl_->cvode) {
     release();

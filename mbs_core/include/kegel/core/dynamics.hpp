@@ -10,7 +10,9 @@
 //                         v_RC, w_R (angular velocity, frame R);
 //   cage (13 values):     p_RG (centre), q (unit quaternion w, x, y, z: cage axes in R),
 //                         v_RG, w_G (angular velocity in the cage's own axes);
-//   inner ring (6):       d (displacement of its centre), v (its velocity).
+//   inner ring (10):      d (displacement of its pivot), v (its velocity), tilt (rx, ry) and
+//                         tilt rates; the tilt turns the ring about its pivot on the axis in the
+//                         roller mid-plane: x = c + d + Rx(rx) Ry(ry) (x_ring - c).
 // A roller is a body of revolution: its spin angle does not enter any force, so its attitude is
 // its axis alone and its Euler equation is written in frame R,
 //   I w' = M - (I_a - I_t)(a . w)(w x a),   I = I_t 1 + (I_a - I_t) a a^T,
@@ -114,6 +116,8 @@ struct DynamicValues {
   double cage_pocket_axial_clearance_m = 0.0;
   double cage_edge_height_m = 0.0;          ///< window edges above the roller axis (towards the cup)
   double ring_mass_kg = 0.0;                ///< inner ring with the shaft share that moves with it
+  double ring_inertia_axial_kgm2 = 0.0;     ///< for the gyroscopic moment of a tilting ring
+  double ring_inertia_transverse_kgm2 = 0.0;  ///< about the pivot
   double damping_time_s = 0.0;              ///< d_max = damping_time x contact stiffness at delta_max (Eq. 2)
   Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d::Zero();
   int cage_points = 4;                      ///< points per window edge
@@ -121,14 +125,16 @@ struct DynamicValues {
 };
 
 /// The driven inner ring: a speed profile (piecewise linear in time, held constant after the
-/// last point), loads on it, and which of its translations are free.
+/// last point), loads on it, and which of its translations and tilts are free. A held tilt stays
+/// at its initial value (the imposed misalignment of the quasi-static initial state).
 struct RingDrive {
   std::vector<double> time_s{0.0};
   std::vector<double> speed_rad_s{0.0};
   double axial_N = 0.0;      ///< pushes the ring towards the apex (-z)
-  double radial_N = 0.0;     ///< along +x
-  double misalignment_x_rad = 0.0, misalignment_y_rad = 0.0;  ///< imposed tilt
+  double radial_N = 0.0;     ///< along +x, at the pivot
+  double tilt_moment_x_Nm = 0.0, tilt_moment_y_Nm = 0.0;  ///< about the pivot (tilt_free)
   bool free_x = true, free_y = true, free_z = true;
+  bool tilt_free = false;
   double speed(double t) const noexcept;
   double acceleration(double t) const noexcept;
 };
@@ -147,7 +153,7 @@ class DynamicModel {
   const SurfacePair& rib() const noexcept { return rib_; }
   const ContactLubricantState& lubricant() const noexcept { return lub_; }
   int roller_count() const noexcept { return bearing_->values().roller_count; }
-  int state_size() const noexcept { return 12 * roller_count() + 19; }
+  int state_size() const noexcept { return 12 * roller_count() + 23; }
   int cage_offset() const noexcept { return 12 * roller_count(); }
   int ring_offset() const noexcept { return 12 * roller_count() + 13; }
   double pocket_damping_Ns_m() const noexcept { return d_pocket_; }
@@ -203,6 +209,7 @@ struct DynamicOutputs {
   /// contacts take from the bodies (dissipation plus the rate of the elastic energy)
   double contact_work_W = 0.0;
   Eigen::Vector3d ring_force_N = Eigen::Vector3d::Zero();  ///< of the rollers on the inner ring
+  Eigen::Vector3d ring_moment_Nm = Eigen::Vector3d::Zero();  ///< ... about its pivot
   std::vector<RollerOutputs> rollers;
 };
 
@@ -215,9 +222,9 @@ class DynamicData {
   // per-roller contributions of the last evaluation: wrench on the roller (about its centre),
   // on the cage (about the cage centre), force on the inner ring
   std::vector<Wrench> on_roller, on_cage;
-  std::vector<Eigen::Vector3d> on_ring;
+  std::vector<Wrench> on_ring;                ///< about the ring's pivot
   std::vector<Wrench> base_cage;              ///< the same at the Jacobian's base state
-  std::vector<Eigen::Vector3d> base_ring;
+  std::vector<Wrench> base_ring;
   std::vector<SliceGeometry> geo;
   std::vector<double> e, xi;
   std::vector<const ForceElement*> elements;  ///< not owned
@@ -234,8 +241,8 @@ int dynamic_rhs(const DynamicModel& model, DynamicData& data, const RingDrive& d
 
 /// Jacobian df/dy by coloured finite differences: every roller's column c is perturbed at once
 /// (rollers do not touch each other; their effect on cage and ring is kept apart through the
-/// per-roller contributions), the cage's and ring's columns one by one: 12 + 13 + 6
-/// evaluations instead of 12 Z + 19. J is column-major, N x N. f0 = f(t, y).
+/// per-roller contributions), the cage's and ring's columns one by one: 12 + 13 + 10
+/// evaluations instead of 12 Z + 23. J is column-major, N x N. f0 = f(t, y).
 int dynamic_jacobian(const DynamicModel& model, DynamicData& data, const RingDrive& drive, double t, const double* y,
                      const double* f0, double* J, double* work) noexcept;
 
