@@ -308,7 +308,12 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     // start: Palmgren approaches for the mean roller loads of the axial and the radial share
     const double Qa = Fa_est / (v.roller_count * std::sin(v.cup_angle_rad));
     const double Qr = 4.08 * L.radial_N / (v.roller_count * std::cos(v.cup_angle_rad));
-    const double da = 2.0 * palmgren_approach_m(Qa + 0.5 * Qr, l);
+    // plus the profile drop at the slice nearest the roller's middle: a crowned roller touches
+    // there first, and under a light load Palmgren's approach alone leaves every slice out of
+    // contact (no residual gradient to start Newton from)
+    double drop = 1e300;
+    for (int i = 0; i < v.slices; ++i) drop = std::min(drop, m.profile().drop_m(m.outer_line().position_m(i)));
+    const double da = 2.0 * (palmgren_approach_m(Qa + 0.5 * Qr, l) + drop);
     x.setZero();
     x[2] = -da / std::sin(v.cup_angle_rad);
     x[0] = L.radial_N > 0.0 ? 2.0 * palmgren_approach_m(Qr, l) / std::cos(v.cup_angle_rad) : 0.0;
