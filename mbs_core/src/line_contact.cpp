@@ -140,21 +140,27 @@ void LineContactModel::influence_column(double b, double* v, double* t) const no
   v[0] = c * 2.0 * h_lo;
   if (t) t[0] = -c * g_lo;
   const double b2 = b * b, b4 = b2 * b2;
-  for (int k = 1; k < n_; ++k) {
-    if ((k - 0.5) * w_ >= 6.0 * b) {
-      v[k] = c * (0.5 * kPi * far_log_[k] + (kPi / 32.0) * b2 * far_p2_[k] - (3.0 * kPi / 512.0) * b4 * far_p4_[k]);
-      if (t) t[k] = -0.5 * c * (-(kPi / 16.0) * b2 * far_p2_[k] + (3.0 * kPi / 128.0) * b4 * far_p4_[k]);
-    } else {
-      const double a_hi = (k + 0.5) * w_ / b;
-      const double h_hi = strip_influence_H(a_hi);
-      v[k] = c * (h_hi - h_lo);
-      h_lo = h_hi;
-      if (t) {
-        const double g_hi = G(a_hi);
-        t[k] = -0.5 * c * (g_hi - g_lo);
-        g_lo = g_hi;
-      }
+  int k = 1;
+  for (; k < n_ && (k - 0.5) * w_ < 6.0 * b; ++k) {  // near field: the tabulated strip function
+    const double a_hi = (k + 0.5) * w_ / b;
+    const double h_hi = strip_influence_H(a_hi);
+    v[k] = c * (h_hi - h_lo);
+    h_lo = h_hi;
+    if (t) {
+      const double g_hi = G(a_hi);
+      t[k] = -0.5 * c * (g_hi - g_lo);
+      g_lo = g_hi;
     }
+  }
+  // far field: the asymptote, b-independent logarithm precomputed (a branch-free loop)
+  const double c0 = 0.5 * kPi * c, c2 = (kPi / 32.0) * c * b2, c4 = (3.0 * kPi / 512.0) * c * b4;
+  const double* fl = far_log_.data();
+  const double* f2 = far_p2_.data();
+  const double* f4 = far_p4_.data();
+  for (int kk = k; kk < n_; ++kk) v[kk] = c0 * fl[kk] + c2 * f2[kk] - c4 * f4[kk];
+  if (t) {
+    const double d2 = -0.5 * (-2.0 * c2), d4 = -0.5 * (4.0 * c4);
+    for (int kk = k; kk < n_; ++kk) t[kk] = d2 * f2[kk] + d4 * f4[kk];
   }
 }
 
@@ -228,20 +234,20 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
         double dq_prev = 0.0;
         for (int it = 0; it < 4; ++it) {
           ++d.iterations;
+          // displacements u = C(q) q, column by column (C is Toeplitz in |i - j| per column)
+          double* u = d.tcol_.data();  // free in the chord steps (d.e_ may hold e itself)
+          std::fill(u, u + n, 0.0);
           for (int j = 0; j < n; ++j) {
             if (!act[j]) continue;
+            const double* col = d.col_.data();
             m.influence_column(hertz_half_width(q[j], m.reduced_radius_m(j), E), d.col_.data(), nullptr);
-            for (int i = 0; i < n; ++i) d.C_(i, j) = d.col_[i > j ? i - j : j - i];
+            const double qj = q[j];
+            for (int i = 0; i < j; ++i) u[i] += col[j - i] * qj;
+            for (int i = j; i < n; ++i) u[i] += col[i - j] * qj;
           }
           double qmax = 0.0;
           for (int i = 0; i < n; ++i) {
-            double r = 0.0;
-            if (act[i]) {
-              for (int j = 0; j < n; ++j)
-                if (act[j]) r += d.C_(i, j) * q[j];
-              r -= e[i];
-            }
-            d.sol_[i] = r;
+            d.sol_[i] = act[i] ? u[i] - e[i] : 0.0;
             qmax = std::max(qmax, q[i]);
           }
           d.sol_ = d.lu_.solve(d.sol_);
@@ -260,13 +266,11 @@ int solve_line_contact(const LineContactModel& m, LineContactData& d, const doub
           if (dq_prev > 0.0 && next > dq) break;  // not contracting: Newton instead
           if (next <= s.tolerance * qmax) {
             // complementarity of the inactive slices with the converged loads
+            // (u of the loads before this last, negligible correction)
             bool gaps_ok = true;
             for (int i = 0; i < n && gaps_ok; ++i) {
               if (act[i]) continue;
-              double u = 0.0;
-              for (int j = 0; j < n; ++j)
-                if (act[j]) u += d.C_(i, j) * q[j];
-              if (u < e[i] - 1e-12 * emax) gaps_ok = false;
+              if (u[i] < e[i] - 1e-12 * emax) gaps_ok = false;
             }
             chord_done = gaps_ok;
             break;
