@@ -1,6 +1,10 @@
 """Coupling of friction and hydraulic losses and flow-force feedback into the MBS.
 
-Mapped into the import package as ``kegel.coupling``.
+Mapped into the import package as ``kegel.coupling``. :mod:`.flow_forces` fits closed-form
+flow-force laws to a correlation or a CFD result and hands them to the dynamic simulation as
+force elements, so the oil acts on the rollers and the cage.
 """
 
-__all__: list[str] = []
+from .flow_forces import FlowForceLaw, flow_forces_from_cfd, flow_forces_from_correlation
+
+__all__ = ["FlowForceLaw", "flow_forces_from_cfd", "flow_forces_from_correlation"]

@@ -163,6 +163,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
     checkpoint after an interrupt)."""
+    from .coupling import flow_forces_from_correlation
     from .dynamics import simulate, write_result
 
     g, b, m, fid, dyn = scene.geometry, scene.bearing, scene.material, scene.fidelity, scene.dynamic
@@ -171,6 +172,17 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
     else:
         rib_note = "hertz"
     profile = list(dyn.speed_profile) or [(0.0, op.speed_rad_s)]
+    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+    # the oil acts on the bodies: the correlation's roller-set drag as a force element on every
+    # roller (fitted at the point's pure-rolling cage speed); the ring churning acts on the rings,
+    # whose speeds are prescribed, and is added to their torques
+    elements, law, hyd0 = [], None, None
+    if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
+        wc0 = op.speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+        hyd0 = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
+                                 oil_level_m=scene.lubrication.oil_level_m, cage_speed_rad_s=wc0)
+        law = flow_forces_from_correlation(hyd0, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=wc0)
+        elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
     res = simulate(g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, speed_profile=profile,
@@ -182,14 +194,18 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
                    checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
                    checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
                                               fid.as_dict(), dyn.as_dict()], sort_keys=True),
-                   progress=sys.stderr.isatty())
-    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+                   progress=sys.stderr.isatty(), elements=elements)
     st = res.steady
     w = st["inner_speed_rad_s"]
     hyd = None
-    if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
+    if hyd0 is not None:
         hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=scene.lubrication.oil_level_m,
                                 cage_speed_rad_s=st["cage_speed_rad_s"])
+    # the drive torque pays for the roller drag through the contacts (the element's power);
+    # friction is the rest; the rings' churning comes on top
+    roller_drag = st["external_power_W"] / w if w else 0.0
+    friction = st["drive_torque_Nm"] - roller_drag
+    churning = (hyd.components["churning_inner_ring_Nm"] + hyd.components["churning_outer_ring_Nm"]) if hyd else 0.0
     power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
     by_contact = {c: sum(power[c].values()) / w for c in CONTACTS}
     by_contact["cage"] = st["cage_power_W"] / w
@@ -199,13 +215,14 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
     last = {k: res.series[k][-1].tolist() for k in ("roller_outer_N", "roller_inner_N", "roller_rib_N")}
     Z = g.roller_count
     meta = {"scene": scene.source, "operating_point": op.as_dict(), "fidelity": fid.as_dict(),
-            "dynamic": dyn.as_dict(), "rib_model": rib_note}
+            "dynamic": dyn.as_dict(), "rib_model": rib_note,
+            "flow_forces": law.as_dict() if law else None}
     files = write_result(res, pdir, meta, g=g, vtk_every=max(1, len(res.time_s) // 100))
     return {
         **op.as_dict(),
-        "friction_torque_Nm": st["drive_torque_Nm"],
-        "hydraulic_torque_Nm": hyd.total_Nm if hyd else 0.0,
-        "total_torque_Nm": st["drive_torque_Nm"] + (hyd.total_Nm if hyd else 0.0),
+        "friction_torque_Nm": friction,
+        "hydraulic_torque_Nm": roller_drag + churning,
+        "total_torque_Nm": friction + roller_drag + churning,
         "outer_ring_torque_Nm": st["outer_ring_torque_Nm"],
         "outer_ring_torque_std_Nm": st["outer_ring_torque_std"],
         "power_input_W": st["power_input_W"],
@@ -218,7 +235,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
         "power_W": power,
         "Lambda_min": {c: float(res.series[f"Lambda_min_{c}"][-1]) for c in CONTACTS},
         "phi_max": {c: float(res.series[f"phi_max_{c}"][-1]) for c in CONTACTS},
-        "hydraulic": hyd.as_dict() if hyd else None,
+        "hydraulic": ({**hyd.as_dict(), "roller_drag_on_the_bodies_Nm": roller_drag,
+                       "flow_force_law": law.as_dict()} if hyd else None),
         "roller_azimuth_rad": (2 * np.pi * np.arange(Z) / Z).tolist(),
         **last,
         "axial_force_N": -float(res.series["ring_force_N"][-1][2]),

@@ -490,7 +490,9 @@ int DragElement::wrench(int body, const BodyKinematics& k, const ForceContext& c
   const Vec3 v_oil = (v_.swirl_ratio * ctx.cage_speed_rad_s) * Vec3::UnitZ().cross(k.p_RC);
   const Vec3 u = k.v_RC - v_oil;
   out.force_N = -0.5 * v_.oil_density_kg_m3 * v_.roller_drag_coefficient * v_.roller_frontal_area_m2 * u.norm() * u;
-  out.moment_Nm = -v_.roller_spin_drag_Nms * k.w_R.dot(k.axis_R) * k.axis_R;
+  // the spin relative to the cage frame, where the oil around the rollers turns
+  const double spin = (k.w_R - ctx.cage_speed_rad_s * Vec3::UnitZ()).dot(k.axis_R);
+  out.moment_Nm = -v_.roller_spin_drag_Nms * spin * k.axis_R;
   return 0;
 }
 

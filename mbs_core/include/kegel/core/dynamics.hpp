@@ -81,7 +81,8 @@ class ForceElement {
 /// fits to CFD results or takes from a correlation):
 ///   roller: F = -1/2 rho C_D A |u| u, u = velocity of the roller centre relative to oil that
 ///           swirls about the bearing axis at swirl_ratio x the cage speed; moment about its axis
-///           -c_spin (w . a) a (viscous spin drag);
+///           -c_spin ((w - w_cage e_z) . a) a (viscous drag of its spin relative to the cage frame,
+///           where the oil around the rollers turns: the frame of a frozen-rotor CFD run);
 ///   cage:   moment about the bearing axis -c_cage w_z - c_cage2 |w_z| w_z.
 struct DragElementValues {
   double oil_density_kg_m3 = 0.0;

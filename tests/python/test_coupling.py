@@ -1,0 +1,139 @@
+"""Flow-force coupling: laws fitted to a correlation or a CFD result reproduce it at the fitted
+point through the C++ force element, and oil-bath scenes run dynamically with the oil acting on
+the rollers."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import kegel
+from kegel.correlations import hydraulic_torques
+from kegel.coupling import flow_forces_from_cfd, flow_forces_from_correlation
+from kegel.coupling.flow_forces import orbit_radius_m
+from kegel.dynamics import D, dynamic_model
+from kegel.tribology import load_friction
+
+RPM = math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def b32216():
+    b = kegel.load_bearing("32216")
+    m = kegel.load_material("bearing_steel")
+    return kegel.derive_geometry(b, m), b, m, kegel.load_lubricant("FVA3")
+
+
+def _orbiting_state(model, g, wc, spin):
+    qs = kegel._core.quasi_static.BearingData(model[1])
+    return np.asarray(D.initial_state(model[0], qs, wc, [spin] * g.roller_count))
+
+
+def _external(model, y, elements):
+    d = D.RingDrive()
+    d.time_s, d.speed_rad_s, d.axial_N = [0.0], [0.0], 0.0
+    st, f, out = D.rhs(model, d, 0.0, y, elements)
+    assert st == 0
+    return out["external_power_W"]
+
+
+def test_the_correlation_law_reproduces_the_roller_set_drag(b32216):
+    g, b, m, lub = b32216
+    state = kegel.lubricant_state(lub, 323.15)
+    w = 2000 * RPM
+    wc = w * g.inner_raceway_diameter_mid_m / (2 * g.pitch_diameter_m)
+    hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=g.outer_diameter_m,
+                            cage_speed_rad_s=wc)
+    law = flow_forces_from_correlation(hyd, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=wc)
+    # by hand: Z rollers at the pitch radius, each with the fitted drag
+    r = orbit_radius_m(g)
+    assert -g.roller_count * r * law.roller_orbit_force_N(wc * r) == pytest.approx(hyd.cage_Nm, rel=1e-12)
+    # through the C++ element: the power it takes from rollers orbiting at wc
+    fr = load_friction()
+    model = dynamic_model(g, b, m, lub, fr, temperature_K=323.15, slices=8)
+    y = _orbiting_state(model, g, wc, 0.0)
+    P = _external(model[0], y, [law.element()])
+    # the rollers sit at their quasi-static places, um from the nominal ones
+    assert P == pytest.approx(hyd.cage_Nm * wc, rel=1e-3)
+    # quadratic in the speed off the fitted point
+    assert law.roller_orbit_force_N(2 * wc * r) == pytest.approx(4 * law.roller_orbit_force_N(wc * r))
+    with pytest.raises(kegel.KegelInputError, match="cage_speed_rad_s"):
+        flow_forces_from_correlation(hyd, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=0.0)
+
+
+def test_the_cfd_law_reproduces_the_cfd_forces_at_its_kinematics(b32216, tmp_path):
+    g, b, m, lub = b32216
+    Z, r = g.roller_count, orbit_radius_m(g)
+    wc, ws = 88.0, -650.0
+    # a CFD result as kegel cfd run writes it: orbit drag 2 mN m per roller about the axis, spin
+    # torque 0.3 mN m against the spin, cage moment -1.5 mN m
+    spin_t = 3e-4
+    rollers = [{"name": f"roller_{k:02d}", "force_N": [0.0, 0.0, 0.0],
+                "moment_about_centre_Nm": [0.0, 0.0, spin_t * math.cos(g.roller_axis_angle_rad)],
+                "spin_torque_Nm": {"total": spin_t}, "moment_about_bearing_axis_Nm": -2e-3 + spin_t * math.cos(
+                    g.roller_axis_angle_rad)} for k in range(Z)]
+    res = {"point": {"bearing": "32216", "temperature_K": 323.15, "lubricant": "FVA3"},
+           "kinematics": {"inner_ring_rad_s": 209.4, "cage_rad_s": wc, "roller_spin_rad_s": ws},
+           "rollers": rollers, "cage": {"force_N": [0, 0, 0], "moment_Nm": [0.0, 0.0, -1.5e-3]}}
+    path = tmp_path / "results.json"
+    path.write_text(json.dumps(res))
+    law = flow_forces_from_cfd(path, g)
+    assert -r * law.roller_orbit_force_N(wc * r) == pytest.approx(2e-3, rel=1e-12)
+    assert law.roller_spin_drag_Nms * -ws == pytest.approx(-spin_t, rel=1e-12) or \
+        law.roller_spin_drag_Nms == pytest.approx(spin_t / -ws, rel=1e-12)
+    assert law.cage_drag_Nms * wc == pytest.approx(1.5e-3, rel=1e-12)
+    # through the C++ element: rollers orbiting at wc with spin ws, cage at wc
+    fr = load_friction()
+    model = dynamic_model(g, b, m, lub, fr, temperature_K=323.15, slices=8)
+    y = _orbiting_state(model, g, wc, ws)
+    P = _external(model[0], y, [law.element()])
+    # the spin moment c (w_rel . a) takes power with the absolute rate w . a = ws + wc a_z
+    a_z = np.mean([y[12 * j + 5] for j in range(Z)])
+    P_ref = Z * 2e-3 * wc + Z * spin_t * abs(ws + wc * a_z) + 1.5e-3 * wc
+    assert P == pytest.approx(P_ref, rel=2e-3)
+    with pytest.raises(kegel.KegelInputError, match="rollers"):
+        flow_forces_from_cfd({**res, "rollers": rollers[:3]}, g)
+    with pytest.raises(kegel.KegelInputError, match="readable CFD results.json"):
+        flow_forces_from_cfd(tmp_path / "missing.json", g)
+
+
+def test_an_oil_bath_scene_runs_dynamically_with_the_oil_on_the_rollers(tmp_path):
+    from conftest import run_kegel
+
+    scene = """
+[bearing]
+designation = "32216"
+[lubricant]
+name = "FVA3"
+[operating]
+axial_load = "6 kN"
+speed = "2000 rpm"
+temperature = "50 degC"
+[lubrication]
+mode = "oil_bath"
+oil_level = "flooded"
+[model]
+fidelity = "fast"
+solution = "dynamic"
+[dynamic]
+duration = "2 ms"
+output_interval = "0.2 ms"
+[output]
+directory = "out"
+"""
+    (tmp_path / "bath.toml").write_text(scene)
+    res = run_kegel("run", "bath.toml", cwd=tmp_path, timeout=300)
+    assert res.returncode == 0, res.stderr
+    p = json.loads((tmp_path / "out" / "results.json").read_text())["points"][0]
+    h = p["hydraulic"]
+    assert h["flow_force_law"]["roller_drag_coefficient"] > 0
+    assert h["roller_drag_on_the_bodies_Nm"] > 0
+    churn = h["components"]["churning_inner_ring_Nm"] + h["components"]["churning_outer_ring_Nm"]
+    assert p["hydraulic_torque_Nm"] == pytest.approx(h["roller_drag_on_the_bodies_Nm"] + churn, rel=1e-12)
+    assert p["total_torque_Nm"] == pytest.approx(p["friction_torque_Nm"] + p["hydraulic_torque_Nm"], rel=1e-12)
+    # the element's drag equals the correlation's roller-set drag within the cage slip
+    assert h["roller_drag_on_the_bodies_Nm"] == pytest.approx(
+        h["components"]["drag_rollers_Nm"] * p["cage_speed_rpm"] / p["speed_rpm"], rel=0.05)
