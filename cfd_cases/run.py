@@ -396,7 +396,9 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     result = _postprocess(case, point, meta, monitor.window, summary.stopped_early or summary.state.ended)
     result.stopped_by = ("steady torque" if monitor.window is not None else
                          "wall-time budget" if budget_hit["hit"] else "end time / iteration limit")
-    result.simulated_time = float(summary.state.time)
+    # a resumed run that had nothing left to do logs no time step: the case's latest time counts
+    written = time_dirs(case)
+    result.simulated_time = max(float(summary.state.time), float(written[-1].name) if written else 0.0)
     result.runtime_s = runtime + meta.get("runtime_before_s", 0.0)
     meta["runtime_before_s"] = result.runtime_s
     (case / "kegel-case.json").write_text(json.dumps(meta, indent=2))
