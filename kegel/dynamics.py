@@ -19,9 +19,9 @@ import math
 import os
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Sequence
+from typing import Any, Sequence
 
 import numpy as np
 
@@ -88,12 +88,6 @@ def cage_mass_properties(g: BearingGeometry, density_kg_m3: float) -> tuple[floa
     zc = float((dm * z).sum() / mass)
     I_tr = float((dm * (0.5 * r ** 2 + (z - zc) ** 2)).sum())
     return mass, I_ax, I_tr, edge_h
-
-
-def ring_mass_kg(g: BearingGeometry, bearing: BearingData, density_kg_m3: float) -> float:
-    """Mass of the inner ring (cone): the ring between the bore and the raceway's mean diameter
-    over the cone width B."""
-    return ring_mass_properties(g, bearing, density_kg_m3)[0]
 
 
 def ring_mass_properties(g: BearingGeometry, bearing: BearingData, density_kg_m3: float) -> tuple[float, float, float]:
