@@ -315,6 +315,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     qs_data = _core.quasi_static.BearingData(qs_model)
     initial = "quasi_static"
     wc, spins = 0.0, [0.0] * g.roller_count
+    wc_pure = _pure_rolling(g, w_start)[0]
     try:
         if abs(w_start) > 0:
             _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
@@ -324,6 +325,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
             if not fr.converged:
                 raise RuntimeError("the quasi-static kinematics did not converge")
             wc, spins = fr.cage_speed_rad_s, list(fr.roller_spin_rad_s)
+            wc_pure = fr.cage_speed_pure_rolling_rad_s
         else:
             load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
                               radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
@@ -427,6 +429,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if finished and ck is not None:
         ck.unlink(missing_ok=True)
     stats = {"initial_state": initial, "resumed_from_s": resumed_from, "integration_wall_s": integration_s,
+             "cage_to_inner_speed_pure_rolling": (wc_pure / w_start if w_start else _pure_rolling(g, 1.0)[0]),
              "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
              "slices": slices, "method": method, "cage": cage, "rtol": rtol}

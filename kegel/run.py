@@ -211,7 +211,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
     by_contact["cage"] = st["cage_power_W"] / w
     by_mech = {k: sum(power[c][k] for c in CONTACTS) / w for k in MECHANISMS}
     by_mech["solid_sliding"] += st["cage_power_W"] / w
-    wc0 = w * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+    # pure-rolling cage speed (the quasi-static kinematics' ratio) at the mean speed
+    wc0 = res.stats["cage_to_inner_speed_pure_rolling"] * w
     last = {k: res.series[k][-1].tolist() for k in ("roller_outer_N", "roller_inner_N", "roller_rib_N")}
     Z = g.roller_count
     meta = {"scene": scene.source, "operating_point": op.as_dict(), "fidelity": fid.as_dict(),
