@@ -399,3 +399,27 @@ def test_a_tilt_free_ring_finds_the_quasi_static_tilt(setup):
     assert ry == pytest.approx(d.ring_tilt_rad[1], rel=0.1)
     assert abs(rx) < 0.05 * abs(ry)
     assert abs(r.steady["power_balance_error"]) < 0.02
+
+
+def test_regression_against_the_stored_reference():
+    """A loaded 32216 (Fa 8 kN, Fr 4 kN, 2000 rpm) against the values stored when the dynamic
+    model was accepted (tests/python/reference/make_dynamic_reference.py writes them). Torques
+    within 0.5 %, cage speed within 1e-4, roller loads within 0.5 % of the largest."""
+    import json
+    import sys
+    from pathlib import Path
+
+    ref_dir = Path(__file__).parent / "reference"
+    sys.path.insert(0, str(ref_dir))
+    try:
+        from make_dynamic_reference import compute
+    finally:
+        sys.path.pop(0)
+    ref = json.loads((ref_dir / "dynamic_32216_combined_load.json").read_text())["values"]
+    now = compute()
+    for k in ("outer_ring_torque_Nm", "drive_torque_Nm", "torque_outer_raceway_Nm", "torque_inner_raceway_Nm",
+              "torque_rib_Nm", "power_contacts_W"):
+        assert now[k] == pytest.approx(ref[k], rel=5e-3), k
+    assert now["cage_speed_rad_s"] == pytest.approx(ref["cage_speed_rad_s"], rel=1e-4)
+    q, q_ref = np.asarray(now["roller_inner_N_final"]), np.asarray(ref["roller_inner_N_final"])
+    assert np.max(np.abs(q - q_ref)) < 5e-3 * q_ref.max()
