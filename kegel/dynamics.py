@@ -222,25 +222,30 @@ def _steady(t: np.ndarray, series: dict[str, np.ndarray], Q: np.ndarray, fractio
 
 
 class _Progress:
+    """Simulated time, step size and ETA on stderr: a refreshed line on a terminal (every
+    second), a new line every 10 s otherwise (logs)."""
+
     def __init__(self, t0: float, t1: float, enabled: bool) -> None:
         self.t0, self.t1, self.enabled, self.w0, self.last = t0, t1, enabled, time.perf_counter(), 0.0
+        self.tty = sys.stderr.isatty()
 
     def update(self, t: float, h: float, steps: int) -> None:
         if not self.enabled:
             return
         now = time.perf_counter()
-        if now - self.last < 1.0:
+        if now - self.last < (1.0 if self.tty else 10.0) or now - self.w0 < (0.0 if self.tty else 10.0):
             return
         self.last = now
         el = now - self.w0
         frac = (t - self.t0) / (self.t1 - self.t0)
         eta = el / frac * (1 - frac) if frac > 0 else float("nan")
-        sys.stderr.write(f"\rt = {t * 1e3:8.3f} ms of {self.t1 * 1e3:.1f} ms, step {h * 1e6:7.2f} us, "
-                         f"{steps} steps, {el:6.1f} s, ETA {eta:6.1f} s ")
+        line = (f"t = {t * 1e3:8.3f} ms of {self.t1 * 1e3:.1f} ms, step {h * 1e6:7.2f} us, "
+                f"{steps} steps, {el:6.1f} s, ETA {eta:6.1f} s")
+        sys.stderr.write(f"\r{line} " if self.tty else f"dynamics: {line}\n")
         sys.stderr.flush()
 
     def close(self) -> None:
-        if self.enabled and self.last:
+        if self.enabled and self.last and self.tty:
             sys.stderr.write("\n")
 
 

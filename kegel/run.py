@@ -87,7 +87,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     points: list[dict[str, Any]] = []
     for i, op in enumerate(scene.operating_points):
         if fid.solution == "dynamic":
-            point = _dynamic_point(scene, op, friction, out)
+            point = _dynamic_point(scene, op, friction, out, progress)
             points.append(point)
             if on_point:
                 on_point(point)
@@ -159,7 +159,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     return RunResult(points=points, files=files, runtime_s=runtime)
 
 
-def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
+def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dict[str, Any]:
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
     checkpoint after an interrupt)."""
@@ -194,7 +194,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path) -> dict[str, Any]:
                    checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
                    checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
                                               fid.as_dict(), dyn.as_dict()], sort_keys=True),
-                   progress=sys.stderr.isatty(), elements=elements)
+                   progress=progress, elements=elements)
     st = res.steady
     w = st["inner_speed_rad_s"]
     hyd = None
