@@ -37,6 +37,8 @@ class PyForceElement final : public ForceElement {
       } catch (...) {
       }
       return -1;
+    } catch (...) {  // nothing may cross the SUNDIALS callback
+      return -1;
     }
   }
   std::string message() const override { return msg_; }
