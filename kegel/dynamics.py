@@ -260,7 +260,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
              raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
              tilt_moment_Nm: float = 0.0,
-             max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "") -> DynamicResult:
+             max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1) -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -292,6 +292,9 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         of an adjusted pair): needed when the axial load cannot hold the rollers in the cup, e.g.
         a light load at high speed, where the centrifugal force pushes the rollers out of the cup
         with more than the axial load.
+    threads
+        Rollers evaluated in parallel (OpenMP); the results do not depend on it. Python force
+        elements run serially.
     max_ring_displacement_m
         The run stops with :class:`SimulationDiverged` when the inner ring moves further: the
         bearing has come apart (far beyond any elastic deflection).
@@ -366,6 +369,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     drive.tilt_moment_y_Nm = tilt_moment_Nm
     st = D.IntegratorSettings()
     st.rtol = rtol
+    st.threads = threads
     st.atol_velocity_m_s = atol_velocity_m_s
     st.atol_rate_rad_s = atol_velocity_m_s / g.roller_mean_diameter_m * 2.0
     st.atol_position_m = 1e-3 * atol_velocity_m_s / max(abs(w_start), 1.0) + 1e-12

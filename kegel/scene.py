@@ -45,6 +45,7 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
     average_fraction = 0.5                   # steady-state averages over the last half
     tolerance = 1e-7                         # CVODE's relative tolerance
     checkpoint_interval = "5 ms"             # resume from the last checkpoint after an interrupt
+    threads = 2                              # rollers in parallel (default: every available core)
 
     [output]
     directory = "results/32216_table1"       # optional
@@ -99,7 +100,7 @@ _ALLOWED: dict[str, set[str]] = {
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
-                "tolerance", "checkpoint_interval"},
+                "tolerance", "checkpoint_interval", "threads"},
     "output": {"directory"},
 }
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
@@ -187,6 +188,7 @@ class DynamicSettings:
     average_fraction: float = 0.5
     tolerance: float = 1e-7
     checkpoint_interval_s: float = 5e-3
+    threads: int = 0   # 0: every core the process may use
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -211,6 +213,11 @@ def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
             if not isinstance(table[key], bool):
                 raise reader.error(f"dynamic.{key}", table[key], "true or false")
             kw[key] = table[key]
+    if "threads" in table:
+        v = table["threads"]
+        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 64:
+            raise reader.error("dynamic.threads", v, "an integer in [1, 64]")
+        kw["threads"] = v
     for key, lo, hi in (("average_fraction", 0.0, 1.0), ("tolerance", 1e-12, 1e-3)):
         if key in table:
             v = table[key]

@@ -42,6 +42,7 @@ class PyForceElement final : public ForceElement {
     }
   }
   std::string message() const override { return msg_; }
+  bool thread_safe() const noexcept override { return false; }  // Python needs the GIL
 
  private:
   nb::callable f_;
@@ -154,7 +155,8 @@ void bind_dynamics(nb::module_& parent) {
       .def_rw("max_step_s", &IntegratorSettings::max_step_s)
       .def_rw("max_steps", &IntegratorSettings::max_steps)
       .def_rw("coloured_jacobian", &IntegratorSettings::coloured_jacobian)
-      .def_rw("absolute_velocity_tolerance", &IntegratorSettings::absolute_velocity_tolerance);
+      .def_rw("absolute_velocity_tolerance", &IntegratorSettings::absolute_velocity_tolerance)
+      .def_rw("threads", &IntegratorSettings::threads);
   nb::class_<ForceElement>(m, "ForceElement");
   nb::class_<DragElementValues>(m, "DragElementValues")
       .def(nb::init<>())

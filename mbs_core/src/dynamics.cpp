@@ -7,6 +7,10 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -79,14 +83,30 @@ RingKin ring_kin(const DynamicModel& m, const RingDrive& drive, double t, const 
   return k;
 }
 
-struct RollerAcc {  // accumulators of one evaluation (outputs)
-  double P[3][5] = {};
-  double damping_W = 0.0, cage_W = 0.0, external_W = 0.0;
-  double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
-  double contact_W = 0.0;  // work rate of all contact forces on the pair (dissipation + elastic energy rate)
-  double torque[3] = {0, 0, 0};
-  double max_pen = 0.0;
-};
+using RollerAcc = ContactAccumulators;
+
+int thread_id() noexcept {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
+// Run body(j) for every roller, on up to d.threads threads when every force element allows it.
+template <class Body>
+void for_each_roller(const DynamicData& d, int Z, Body body) noexcept {
+  bool parallel = d.threads > 1;
+  for (const ForceElement* el : d.elements)
+    if (!el->thread_safe()) parallel = false;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(d.threads) if (parallel)
+  for (int j = 0; j < Z; ++j) body(j);
+#else
+  (void)parallel;
+  for (int j = 0; j < Z; ++j) body(j);
+#endif
+}
 
 // The roller's contacts: fills data.on_roller[j], on_cage[j], on_ring[j].
 int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const double* yr, const CageKin& cage,
@@ -115,9 +135,10 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
   const RollerShape shape{bv.roller_mean_radius_m, bv.roller_half_angle_rad, bv.roller_length_m};
   const int n = bv.slices;
   const double wslice = m.bearing().outer_line().width_m();
-  double* e = d.e.data();
+  const int tid = thread_id();
+  double* e = d.e[tid].data();
   const double* xi = d.xi.data();
-  SliceGeometry* geo = d.geo.data();
+  SliceGeometry* geo = d.geo[tid].data();
   double max_pen = 0.0;
   int mid = n / 2;
 
@@ -615,9 +636,13 @@ double DynamicModel::window_half_width_m(double y) const noexcept {
   return rho > h ? std::sqrt(rho * rho - h * h) : 0.0;
 }
 
-DynamicData::DynamicData(const DynamicModel& model) {
+DynamicData::DynamicData(const DynamicModel& model, int n_threads) {
   const int Z = model.roller_count();
   const auto& bv = model.bearing().values();
+  threads = std::max(1, std::min(n_threads, 64));
+#ifndef _OPENMP
+  threads = 1;
+#endif
   inner_lines.assign(Z, LineContactData(model.bearing().inner_line()));
   outer_lines.assign(Z, LineContactData(model.bearing().outer_line()));
   on_roller.assign(Z, Wrench{});
@@ -625,8 +650,10 @@ DynamicData::DynamicData(const DynamicModel& model) {
   on_ring.assign(Z, Wrench{});
   base_cage.assign(Z, Wrench{});
   base_ring.assign(Z, Wrench{});
-  geo.assign(bv.slices, SliceGeometry{});
-  e.assign(bv.slices, 0.0);
+  geo.assign(threads, std::vector<SliceGeometry>(bv.slices));
+  e.assign(threads, std::vector<double>(bv.slices, 0.0));
+  acc.assign(Z, ContactAccumulators{});
+  status.assign(Z, 0);
   xi.resize(bv.slices);
   for (int i = 0; i < bv.slices; ++i) xi[i] = model.bearing().outer_line().position_m(i);
 }
@@ -643,14 +670,32 @@ int dynamic_rhs(const DynamicModel& m, DynamicData& d, const RingDrive& drive, d
   RollerAcc* pacc = out ? &acc : nullptr;
   if (out) out->rollers.resize(Z);
   Vec3 Fc = Vec3::Zero(), Tc = Vec3::Zero(), Fr = Vec3::Zero(), Tr = Vec3::Zero();
-  for (int j = 0; j < Z; ++j) {
-    const int st = eval_roller(m, d, j, t, y + 12 * j, cage, ring, out ? &out->rollers[j] : nullptr, pacc);
-    if (st != 0) return st;
-    roller_derivative(m, y + 12 * j, d.on_roller[j], ydot + 12 * j);
+  for_each_roller(d, Z, [&](int j) {
+    if (out) d.acc[j] = RollerAcc{};
+    d.status[j] = eval_roller(m, d, j, t, y + 12 * j, cage, ring, out ? &out->rollers[j] : nullptr,
+                              out ? &d.acc[j] : nullptr);
+    if (d.status[j] == 0) roller_derivative(m, y + 12 * j, d.on_roller[j], ydot + 12 * j);
+  });
+  for (int j = 0; j < Z; ++j) {  // in roller order: the sums do not depend on the threads
+    if (d.status[j] != 0) return d.status[j];
     Fc += d.on_cage[j].force_N;
     Tc += d.on_cage[j].moment_Nm;
     Fr += d.on_ring[j].force_N;
     Tr += d.on_ring[j].moment_Nm;
+    if (out) {
+      const RollerAcc& a = d.acc[j];
+      for (int k = 0; k < 3; ++k) {
+        for (int q = 0; q < 5; ++q) acc.P[k][q] += a.P[k][q];
+        acc.Lmin[k] = std::min(acc.Lmin[k], a.Lmin[k]);
+        acc.phimax[k] = std::max(acc.phimax[k], a.phimax[k]);
+        acc.torque[k] += a.torque[k];
+      }
+      acc.damping_W += a.damping_W;
+      acc.cage_W += a.cage_W;
+      acc.external_W += a.external_W;
+      acc.contact_W += a.contact_W;
+      acc.max_pen = std::max(acc.max_pen, a.max_pen);
+    }
   }
   const int st = external_on_cage(m, d, t, cage, ring.omega, Fc, Tc, pacc ? &pacc->external_W : nullptr);
   if (st != 0) return st;
@@ -724,14 +769,16 @@ int dynamic_jacobian(const DynamicModel& m, DynamicData& d, const RingDrive& dri
   // roller columns, coloured: column c of every roller at once
   std::copy(y, y + N, yp);
   for (int c = 0; c < 12; ++c) {
-    for (int j = 0; j < Z; ++j) {
+    for_each_roller(d, Z, [&](int j) {
       const int col = 12 * j + c;
       const double h = perturbation(c, y[col]);
-      yp[col] = y[col] + h;
-      st = eval_roller(m, d, j, t, yp + 12 * j, cage, ring, nullptr, nullptr);
-      if (st != 0) return st;
+      double yr[12];
+      std::copy(y + 12 * j, y + 12 * j + 12, yr);
+      yr[c] += h;
+      d.status[j] = eval_roller(m, d, j, t, yr, cage, ring, nullptr, nullptr);
+      if (d.status[j] != 0) return;
       double fr[12];
-      roller_derivative(m, yp + 12 * j, d.on_roller[j], fr);
+      roller_derivative(m, yr, d.on_roller[j], fr);
       double* Jc = J + size_t(col) * N;
       for (int r = 0; r < 12; ++r) Jc[12 * j + r] = (fr[r] - f0[12 * j + r]) / h;
       if (v.cage) {
@@ -750,8 +797,9 @@ int dynamic_jacobian(const DynamicModel& m, DynamicData& d, const RingDrive& dri
         Jc[oi + 8] = dMr.x() / v.ring_inertia_transverse_kgm2;
         Jc[oi + 9] = dMr.y() / v.ring_inertia_transverse_kgm2;
       }
-      yp[col] = y[col];
-    }
+    });
+    for (int j = 0; j < Z; ++j)
+      if (d.status[j] != 0) return d.status[j];
   }
   // cage and ring columns, one by one
   for (int col = oc; col < N; ++col) {
@@ -890,7 +938,7 @@ struct DynamicSimulation::Impl {
 
 DynamicSimulation::DynamicSimulation(std::shared_ptr<const DynamicModel> model, const RingDrive& drive,
                                      const IntegratorSettings& s, double t0, const std::vector<double>& y0)
-    : model_(std::move(model)), data_(*model_), drive_(drive), settings_(s), t_(t0) {
+    : model_(std::move(model)), data_(*model_, s.threads), drive_(drive), settings_(s), t_(t0) {
   const int N = model_->state_size();
   if (static_cast<int>(y0.size()) != N)
     detail::fail("DynamicSimulation", "y0.size", double(y0.size()), "the model's state size " + std::to_string(N));

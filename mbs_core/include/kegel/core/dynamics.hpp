@@ -73,6 +73,8 @@ struct Wrench {
 class ForceElement {
  public:
   virtual ~ForceElement() = default;
+  /// May wrench() run on several threads at once (for different bodies)?
+  virtual bool thread_safe() const noexcept { return true; }
   virtual int wrench(int body, const BodyKinematics& k, const ForceContext& ctx, Wrench& out) const noexcept = 0;
   virtual std::string message() const { return {}; }
 };
@@ -214,11 +216,25 @@ struct DynamicOutputs {
   std::vector<RollerOutputs> rollers;
 };
 
+/// What one roller's contacts contribute to the outputs of an evaluation (summed over the rollers
+/// in roller order afterwards, so the result does not depend on the number of threads).
+struct ContactAccumulators {
+  double P[3][5] = {};
+  double damping_W = 0.0, cage_W = 0.0, external_W = 0.0;
+  double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
+  double contact_W = 0.0;  ///< work rate of all contact forces (dissipation + elastic energy rate)
+  double torque[3] = {0, 0, 0};
+  double max_pen = 0.0;
+};
+
 /// State and workspace of a dynamic simulation (per-roller line-contact data for warm starts,
-/// buffers of the slice geometry; nothing is allocated in the right-hand side).
+/// buffers of the slice geometry per thread; nothing is allocated in the right-hand side).
+/// threads > 1 evaluates the rollers in parallel (OpenMP) unless a force element is not thread
+/// safe (a Python callable); results do not depend on the thread count.
 class DynamicData {
  public:
-  explicit DynamicData(const DynamicModel& model);
+  explicit DynamicData(const DynamicModel& model, int threads = 1);
+  int threads = 1;
   std::vector<LineContactData> inner_lines, outer_lines;
   // per-roller contributions of the last evaluation: wrench on the roller (about its centre),
   // on the cage (about the cage centre), force on the inner ring
@@ -226,8 +242,11 @@ class DynamicData {
   std::vector<Wrench> on_ring;                ///< about the ring's pivot
   std::vector<Wrench> base_cage;              ///< the same at the Jacobian's base state
   std::vector<Wrench> base_ring;
-  std::vector<SliceGeometry> geo;
-  std::vector<double> e, xi;
+  std::vector<std::vector<SliceGeometry>> geo;  ///< per thread
+  std::vector<std::vector<double>> e;            ///< per thread
+  std::vector<double> xi;
+  std::vector<ContactAccumulators> acc;          ///< per roller
+  std::vector<int> status;                       ///< per roller
   std::vector<const ForceElement*> elements;  ///< not owned
   std::string element_message;                ///< why a force element failed
 };
@@ -266,6 +285,7 @@ struct IntegratorSettings {
   /// the friction follows the sliding speed, whose error a relative tolerance on the orbital
   /// speed would not bound.
   bool absolute_velocity_tolerance = true;
+  int threads = 1;                   ///< rollers evaluated in parallel (OpenMP)
 };
 
 /// Quadratures (time integrals along the solution) the simulation keeps, in this order:
