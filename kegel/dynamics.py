@@ -260,7 +260,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
              raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
              tilt_moment_Nm: float = 0.0,
-             max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1) -> DynamicResult:
+             max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1,
+             load_profile: Sequence[tuple[float, float, float]] = ()) -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -292,6 +293,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         of an adjusted pair): needed when the axial load cannot hold the rollers in the cup, e.g.
         a light load at high speed, where the centrifugal force pushes the rollers out of the cup
         with more than the axial load.
+    load_profile
+        (time_s, axial_N, radial_N) points of a load history (linear in between, held after the
+        last point); the initial state is solved for the loads at t = 0. With ``axial_offset_m``
+        (or ``hold_axial``) the axial values are not used.
     threads
         Rollers evaluated in parallel (OpenMP); the results do not depend on it. Python force
         elements run serially.
@@ -313,6 +318,15 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         raise KegelInputError("<argument>", "speed_profile", speed_profile,
                               "(time_s, speed_rad_s) pairs with increasing times")
     w_start = float(np.interp(0.0, prof[:, 0], prof[:, 1])) if initial_speed_rad_s is None else initial_speed_rad_s
+    loads = np.asarray(load_profile, dtype=float).reshape(-1, 3) if len(load_profile) else np.zeros((0, 3))
+    if len(loads) and (not np.all(np.diff(loads[:, 0]) > 0) or not np.isfinite(loads).all()
+                       or (loads[:, 1:] < 0).any()):
+        raise KegelInputError("<argument>", "load_profile", load_profile,
+                              "(time_s, axial_N, radial_N) points with increasing times and loads >= 0")
+    if len(loads):  # the initial state is solved for the loads at t = 0
+        if axial_N is not None:
+            axial_N = float(np.interp(0.0, loads[:, 0], loads[:, 1]))
+        radial_N = float(np.interp(0.0, loads[:, 0], loads[:, 2]))
     wall0 = time.perf_counter()
     model, qs_model = dynamic_model(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
                                     slices=slices, method=method, cage=cage, damping_time_s=damping_time_s)
@@ -365,6 +379,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     else:
         drive.free_z = False
     drive.radial_N = radial_N
+    if len(loads):
+        drive.load_time_s = list(loads[:, 0])
+        drive.axial_profile_N = list(loads[:, 1]) if (axial_N is not None and not hold_axial) else [0.0] * len(loads)
+        drive.radial_profile_N = list(loads[:, 2])
     drive.tilt_free = tilt_free
     drive.tilt_moment_y_Nm = tilt_moment_Nm
     st = D.IntegratorSettings()

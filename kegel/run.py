@@ -194,7 +194,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
                    checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
                    checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
                                               fid.as_dict(), dyn.as_dict()], sort_keys=True),
-                   progress=progress, elements=elements,
+                   progress=progress, elements=elements, load_profile=list(dyn.load_profile),
                    threads=dyn.threads or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
     st = res.steady
     w = st["inner_speed_rad_s"]

@@ -46,6 +46,7 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
     tolerance = 1e-7                         # CVODE's relative tolerance
     checkpoint_interval = "5 ms"             # resume from the last checkpoint after an interrupt
     threads = 2                              # rollers in parallel (default: every available core)
+    load_profile = [["0 ms", "6 kN", "0 kN"], ["20 ms", "6 kN", "8 kN"]]   # axial, radial over time
 
     [output]
     directory = "results/32216_table1"       # optional
@@ -100,7 +101,7 @@ _ALLOWED: dict[str, set[str]] = {
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
-                "tolerance", "checkpoint_interval", "threads"},
+                "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
 }
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
@@ -189,11 +190,13 @@ class DynamicSettings:
     tolerance: float = 1e-7
     checkpoint_interval_s: float = 5e-3
     threads: int = 0   # 0: every core the process may use
+    load_profile: tuple[tuple[float, float, float], ...] = ()
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
         d = dict(self.__dict__)
         d["speed_profile"] = [list(p) for p in self.speed_profile]
+        d["load_profile"] = [list(p) for p in self.load_profile]
         return d
 
 
@@ -213,6 +216,23 @@ def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
             if not isinstance(table[key], bool):
                 raise reader.error(f"dynamic.{key}", table[key], "true or false")
             kw[key] = table[key]
+    if "load_profile" in table:
+        prof = table["load_profile"]
+        if not isinstance(prof, list) or not prof:
+            raise reader.error("dynamic.load_profile", prof, 'a list of ["time", "axial load", "radial load"] triples')
+        pts = []
+        for i, row in enumerate(prof):
+            if not (isinstance(row, list) and len(row) == 3):
+                raise reader.error(f"dynamic.load_profile[{i}]", row, 'a triple ["10 ms", "6 kN", "2 kN"]')
+            t = reader.quantity(row[0], "time", f"dynamic.load_profile[{i}][0]")
+            fa = reader.quantity(row[1], "force", f"dynamic.load_profile[{i}][1]")
+            fr = reader.quantity(row[2], "force", f"dynamic.load_profile[{i}][2]")
+            if fa < 0 or fr < 0:
+                raise reader.error(f"dynamic.load_profile[{i}]", row, "loads >= 0")
+            if pts and not t > pts[-1][0]:
+                raise reader.error(f"dynamic.load_profile[{i}][0]", row[0], "times increasing along the profile")
+            pts.append((t, fa, fr))
+        kw["load_profile"] = tuple(pts)
     if "threads" in table:
         v = table["threads"]
         if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 64:

@@ -440,7 +440,7 @@ void ring_derivative(const DynamicModel& m, const RingDrive& drive, double t, co
                      const Vec3& M_rollers, double* f) noexcept {
   const auto& v = m.values();
   const bool free_[3] = {drive.free_x, drive.free_y, drive.free_z};
-  const Vec3 Fext(drive.radial_N, 0.0, -drive.axial_N);
+  const Vec3 Fext(drive.radial(t), 0.0, -drive.axial(t));
   const Vec3 acc = (F_rollers + Fext) / v.ring_mass_kg + v.gravity_m_s2;
   for (int i = 0; i < 3; ++i) {
     f[i] = free_[i] ? yi[3 + i] : 0.0;
@@ -529,6 +529,25 @@ double RingDrive::speed(double t) const noexcept {
     }
   }
   return speed_rad_s[n - 1];
+}
+
+namespace {
+double piecewise(const std::vector<double>& ts, const std::vector<double>& vs, double t) noexcept {
+  const size_t n = std::min(ts.size(), vs.size());
+  if (n == 0) return 0.0;
+  if (t <= ts[0]) return vs[0];
+  for (size_t i = 1; i < n; ++i)
+    if (t <= ts[i]) return vs[i - 1] + (t - ts[i - 1]) / (ts[i] - ts[i - 1]) * (vs[i] - vs[i - 1]);
+  return vs[n - 1];
+}
+}  // namespace
+
+double RingDrive::axial(double t) const noexcept {
+  return load_time_s.empty() ? axial_N : piecewise(load_time_s, axial_profile_N, t);
+}
+
+double RingDrive::radial(double t) const noexcept {
+  return load_time_s.empty() ? radial_N : piecewise(load_time_s, radial_profile_N, t);
 }
 
 double RingDrive::acceleration(double t) const noexcept {
@@ -950,6 +969,18 @@ DynamicSimulation::DynamicSimulation(std::shared_ptr<const DynamicModel> model, 
   for (double x : drive.speed_rad_s) detail::require_finite("RingDrive", "speed_rad_s", x);
   detail::require_nonnegative("RingDrive", "axial_N", drive.axial_N);
   detail::require_nonnegative("RingDrive", "radial_N", drive.radial_N);
+  if (!drive.load_time_s.empty()) {
+    const size_t n = drive.load_time_s.size();
+    if (drive.axial_profile_N.size() != n || drive.radial_profile_N.size() != n)
+      detail::fail("RingDrive", "axial_profile_N.size", double(drive.axial_profile_N.size()),
+                   "one axial and one radial load per load time (" + std::to_string(n) + ")");
+    for (size_t i = 0; i < n; ++i) {
+      if (i > 0 && !(drive.load_time_s[i] > drive.load_time_s[i - 1]))
+        detail::fail("RingDrive", "load_time_s", drive.load_time_s[i], "increasing times");
+      detail::require_nonnegative("RingDrive", "axial_profile_N", drive.axial_profile_N[i]);
+      detail::require_nonnegative("RingDrive", "radial_profile_N", drive.radial_profile_N[i]);
+    }
+  }
   detail::require_positive("IntegratorSettings", "rtol", s.rtol);
   impl_ = new Impl;
   impl_->sim = this;

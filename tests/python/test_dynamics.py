@@ -369,6 +369,9 @@ def test_a_scene_runs_dynamically_and_writes_series_vtk_and_plots(tmp_path):
     ("hold_axial", '"yes"', "true or false"),
     ("tolerance", "0.5", "a number in"),
     ("speed_profile", '[["0 ms", "0 kN"]]', "speed"),
+    ("load_profile", '[["0 ms", "6 kN"]]', "a triple"),
+    ("load_profile", '[["0 ms", "6 kN", "-1 kN"]]', "loads >= 0"),
+    ("threads", "0", "an integer in [1, 64]"),
 ])
 def test_dynamic_table_errors_name_the_key(tmp_path, key, value, expected):
     from kegel.scene import load_scene
@@ -434,3 +437,28 @@ def test_threads_give_identical_results_faster(setup):
     two = simulate(g, b, m, lub, fr, threads=2, **kw)
     assert np.array_equal(one.states, two.states)
     assert one.stats["steps"] == two.stats["steps"]
+
+
+def test_a_load_change_settles_on_the_quasi_static_equilibrium(setup):
+    """Radial load ramped from 0 to 4 kN in 2 ms under 8 kN axial: 6 ms later the inner ring sits
+    where the quasi-static load distribution puts it for the final loads."""
+    from kegel.quasi_static import load_distribution
+
+    g, b, m, lub, fr = setup
+    r = simulate(g, b, m, lub, fr, temperature_K=323.15, speed_profile=[(0, 2000 * RPM)], duration_s=8e-3,
+                 axial_N=8000.0, slices=8, output_interval_s=5e-4,
+                 load_profile=[(0.0, 8000.0, 0.0), (2e-3, 8000.0, 4000.0)])
+    Z = g.roller_count
+    d0 = r.states[0][12 * Z + 13:12 * Z + 16]
+    d = r.states[-1][12 * Z + 13:12 * Z + 16]
+    assert abs(d0[0]) < 1e-9  # no radial load at the start: centred
+    qs = load_distribution(g, b, m, axial_N=8000.0, radial_N=4000.0, slices=8, method="independent",
+                           cage_speed_rad_s=r.steady["cage_speed_rad_s"])
+    # (the pivots differ: the quasi-static ring turns about the origin, but it is not tilted)
+    assert d[0] == pytest.approx(qs.ring_displacement_m[0], rel=0.02)
+    assert d[2] == pytest.approx(qs.ring_displacement_m[2], rel=0.01)
+    F = r.series["ring_force_N"][-1]  # the rollers carry the loads
+    assert F[0] == pytest.approx(-4000.0, rel=1e-3) and F[2] == pytest.approx(8000.0, rel=1e-3)
+    with pytest.raises(kegel.KegelInputError, match="load_profile"):
+        simulate(g, b, m, lub, fr, temperature_K=323.15, speed_profile=[(0, 1.0)], duration_s=1e-3, axial_N=1.0,
+                 load_profile=[(0.0, 1.0, 0.0), (0.0, 2.0, 0.0)])

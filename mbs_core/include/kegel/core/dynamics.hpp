@@ -135,6 +135,11 @@ struct RingDrive {
   std::vector<double> speed_rad_s{0.0};
   double axial_N = 0.0;      ///< pushes the ring towards the apex (-z)
   double radial_N = 0.0;     ///< along +x, at the pivot
+  /// Optional load history (piecewise linear, held after the last point): when load_time_s is
+  /// not empty, axial_profile_N and radial_profile_N (one value per time) replace the constant loads.
+  std::vector<double> load_time_s, axial_profile_N, radial_profile_N;
+  double axial(double t) const noexcept;
+  double radial(double t) const noexcept;
   double tilt_moment_x_Nm = 0.0, tilt_moment_y_Nm = 0.0;  ///< about the pivot (tilt_free)
   bool free_x = true, free_y = true, free_z = true;
   bool tilt_free = false;
