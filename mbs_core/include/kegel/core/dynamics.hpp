@@ -1,6 +1,6 @@
 // Dynamic multibody simulation of a tapered roller bearing (issue "Dynamic multibody
 // simulation"): every roller and the cage as 6-DOF rigid bodies, the inner ring driven at a
-// prescribed speed and free (or held) in translation, the outer ring fixed.
+// prescribed speed and free (or held) in translation and tilt, the outer ring fixed.
 //
 // Frame R (outer ring, inertial) as in quasi_static.hpp: z = bearing axis towards the rollers'
 // large ends, x = direction of the radial load.
@@ -21,10 +21,14 @@
 // -lambda (|a|^2 - 1) a (Baumgarte), lambda = kNormStabilisation_1_s.
 //
 // Contacts per roller (the same models as the quasi-static solution; seed paper Section 2.1):
-// both raceways by slices (independent Palmgren slices or alternative slicing, Eq. - Sec. 2.1.1)
+// both raceways by slices (independent Palmgren slices or alternative slicing, Sec. 2.1.1)
 // with parametric damping (Eq. 1-3) and the friction of every slice (evaluate_slice: Eq. 4-30,
 // 36); the rib as one elliptic Hertz contact with its friction (evaluate_cell, Eq. 31-35); the
-// cage window (cage_window_contact below) with Coulomb friction (Eq. 37). Rolling resistance
+// cage window: the roller against the window's two edges (lines on the shell's inner face,
+// cage_edge_height above the roller axis, following the roller's taper with the circumferential
+// clearance) at cage_points points each, and against the end bars (planes at +-(L/2 + axial
+// clearance/2) along the pocket), each point with its share of Palmgren's law, Eq. 1-3 damping and
+// the Coulomb friction of Eq. 37; the cage touches nothing else. Rolling resistance
 // (Eq. 16, 19, 20) acts through the shift of each slice's normal force towards the inlet, an
 // action-reaction pair on roller and ring, as in the quasi-static solution.
 #pragma once
