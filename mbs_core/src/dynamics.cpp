@@ -290,8 +290,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       // nrm: unit normal pointing from the roller towards the cage at X
       const Vec3 vrel = v_roller(X) - cage.v_at(X);
       const double v_app = vrel.dot(nrm);
-      const double fn = std::max(k_pt * std::pow(delta, 10.0 / 9.0) +
-                                     tribology::damping_coefficient(delta, dmax, delta_max) * v_app, 0.0);
+      const double damping = tribology::damping_coefficient(delta, dmax, delta_max);
+      const double fn = std::max(k_pt * std::pow(delta, 10.0 / 9.0) + damping * v_app, 0.0);
       Vec3 f = -fn * nrm;  // on the roller
       const Vec3 vt = vrel - v_app * nrm;
       const double vs = vt.norm();
@@ -309,7 +309,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       cageN += fn;
       if (acc) {
         acc->cage_W += Pf;
-        acc->damping_W += tribology::damping_coefficient(delta, dmax, delta_max) * v_app * v_app;
+        acc->damping_W += damping * v_app * v_app;
       }
     };
     for (int side = -1; side <= 1; side += 2) {
@@ -518,19 +518,6 @@ int DragElement::wrench(int body, const BodyKinematics& k, const ForceContext& c
 }
 
 // ------------------------------------------------------------------------------------------
-double RingDrive::speed(double t) const noexcept {
-  const size_t n = std::min(time_s.size(), speed_rad_s.size());
-  if (n == 0) return 0.0;
-  if (t <= time_s[0]) return speed_rad_s[0];
-  for (size_t i = 1; i < n; ++i) {
-    if (t <= time_s[i]) {
-      const double s = (t - time_s[i - 1]) / (time_s[i] - time_s[i - 1]);
-      return speed_rad_s[i - 1] + s * (speed_rad_s[i] - speed_rad_s[i - 1]);
-    }
-  }
-  return speed_rad_s[n - 1];
-}
-
 namespace {
 double piecewise(const std::vector<double>& ts, const std::vector<double>& vs, double t) noexcept {
   const size_t n = std::min(ts.size(), vs.size());
@@ -541,6 +528,8 @@ double piecewise(const std::vector<double>& ts, const std::vector<double>& vs, d
   return vs[n - 1];
 }
 }  // namespace
+
+double RingDrive::speed(double t) const noexcept { return piecewise(time_s, speed_rad_s, t); }
 
 double RingDrive::axial(double t) const noexcept {
   return load_time_s.empty() ? axial_N : piecewise(load_time_s, axial_profile_N, t);
