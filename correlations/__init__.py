@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from ..geometry import BearingGeometry
 from ..lubricant import LubricantState
+from ..tribology import cage_speed_rad_s as pure_rolling_cage_speed
 from .common import HydraulicTorques, immersed_fraction
 from .liebrecht import LiebrechtInput, fractions_for_oil_level, liebrecht_torques
 
@@ -67,7 +68,7 @@ def hydraulic_torques(
     if not 0.0 <= oil_level_m <= D:
         raise ValueError(f"oil_level_m = {oil_level_m}: expected a level in [0, D] = [0, {D}] m")
     if cage_speed_rad_s is None:
-        cage_speed_rad_s = shaft_speed_rad_s * geometry.inner_raceway_diameter_mid_m / (2.0 * geometry.pitch_diameter_m)
+        cage_speed_rad_s = pure_rolling_cage_speed(geometry, shaft_speed_rad_s)
     fractions = fractions_for_oil_level(oil_level_m, D, geometry.pitch_diameter_m, geometry.roller_mean_diameter_m,
                                         geometry.outer_raceway_diameter_mid_m, geometry.inner_raceway_diameter_mid_m)
     x = LiebrechtInput(

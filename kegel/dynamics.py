@@ -30,6 +30,7 @@ from .data import BearingData, MaterialData
 from .errors import KegelInputError
 from .geometry import BearingGeometry
 from .quasi_static import bearing_friction, bearing_model, load_distribution
+from .tribology import cage_speed_rad_s
 
 D = _core.dynamics
 
@@ -352,22 +353,9 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
             load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
                               radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
     except RuntimeError:
-        # the load distribution at rest; the positions do not depend on the slice count, and the
-        # independent-slice solver does not converge under light loads (below ~0.3 kN for the
-        # 32216), so the alternative-slicing model gives them then
-        qs_data = None
-        for sl, me in ((slices, method), (30, "alternative_slicing")):
-            qm = bearing_model(g, bearing, material, slices=sl, method=me)
-            qd = _core.quasi_static.BearingData(qm)
-            try:
-                load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
-                                  radial_N=radial_N, misalignment_rad=misalignment_rad, model=qm, data=qd)
-                qs_data = qd
-                break
-            except RuntimeError:
-                continue
-        if qs_data is None:
-            raise
+        qs_data = _core.quasi_static.BearingData(qs_model)
+        load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
+                          misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
         wc, spins = _pure_rolling(g, w_start)
         initial = "load distribution at rest, pure rolling"
     y0 = np.asarray(D.initial_state(model, qs_data, wc, spins))
@@ -471,8 +459,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
 def _pure_rolling(g: BearingGeometry, inner_speed_rad_s: float) -> tuple[float, list[float]]:
     """Cage speed and roller spins (relative to the cage) of pure rolling on both raceways: the
     rolling cones share their apex, so the speeds go with the radii at the middle contact."""
-    r_i, r_o = 0.5 * g.inner_raceway_diameter_mid_m, 0.5 * g.outer_raceway_diameter_mid_m
-    wc = inner_speed_rad_s * r_i / (r_i + r_o)
+    r_i = 0.5 * g.inner_raceway_diameter_mid_m
+    wc = cage_speed_rad_s(g, inner_speed_rad_s)
     rho = 0.5 * g.roller_mean_diameter_m
     # radii perpendicular to the axes at the contact: the ring's r, the roller's rho / cos(gamma)
     spin = -(inner_speed_rad_s - wc) * r_i / (rho / math.cos(g.roller_half_angle_rad))

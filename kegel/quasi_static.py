@@ -22,6 +22,7 @@ from . import _core
 from .data import BearingData, MaterialData
 from .errors import KegelInputError
 from .geometry import BearingGeometry
+from .tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
 Q = _core.quasi_static
 
@@ -238,7 +239,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     """
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     data = data or Q.BearingData(model)
-    cage0 = inner_speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+    cage0 = pure_rolling_cage_speed(g, inner_speed_rad_s)
     dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
                              misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0, model=model, data=data)
     t0 = time.perf_counter()

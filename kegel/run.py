@@ -29,7 +29,7 @@ from .io import atomic_write_json, atomic_write_text, provenance
 from .lubricant import lubricant_state
 from .quasi_static import bearing_friction, bearing_model
 from .scene import Scene
-from .tribology import load_friction
+from .tribology import cage_speed_rad_s, load_friction
 from . import _core
 
 __all__ = ["RunResult", "run_scene"]
@@ -178,7 +178,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
     # whose speeds are prescribed, and is added to their torques
     elements, law, hyd0 = [], None, None
     if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
-        wc0 = op.speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
+        wc0 = cage_speed_rad_s(g, op.speed_rad_s)
         hyd0 = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
                                  oil_level_m=scene.lubrication.oil_level_m, cage_speed_rad_s=wc0)
         law = flow_forces_from_correlation(hyd0, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=wc0)

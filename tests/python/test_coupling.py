@@ -44,7 +44,7 @@ def test_the_correlation_law_reproduces_the_roller_set_drag(b32216):
     g, b, m, lub = b32216
     state = kegel.lubricant_state(lub, 323.15)
     w = 2000 * RPM
-    wc = w * g.inner_raceway_diameter_mid_m / (2 * g.pitch_diameter_m)
+    wc = kegel.tribology.cage_speed_rad_s(g, w)
     hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=g.outer_diameter_m,
                             cage_speed_rad_s=wc)
     law = flow_forces_from_correlation(hyd, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=wc)
