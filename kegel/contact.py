@@ -80,6 +80,10 @@ class RacewayContact:
         ``"alternative_slicing"`` (AST, default) or ``"independent"``.
     crowned, edge
         Use the roller's crown and edge radius (``False`` for unprofiled studies).
+    reference
+        What the AST approach is measured against: ``"palmgren"`` (default; a finite-body
+        reference depth set so that a flat roller follows Palmgren's approach at 1000 N/mm, the
+        level of the independent slices) or ``"half_space"`` (points at infinite depth).
     """
 
     geometry: BearingGeometry
@@ -90,12 +94,15 @@ class RacewayContact:
     method: str = "alternative_slicing"
     crowned: bool = True
     edge: bool = True
+    reference: str = "palmgren"
 
     def __post_init__(self) -> None:
         if self.side not in ("inner", "outer"):
             raise KegelInputError("<argument>", "side", self.side, "'inner' or 'outer'")
         if self.method not in ("alternative_slicing", "independent"):
             raise KegelInputError("<argument>", "method", self.method, "'alternative_slicing' or 'independent'")
+        if self.reference not in ("palmgren", "half_space"):
+            raise KegelInputError("<argument>", "reference", self.reference, "'palmgren' or 'half_space'")
         if not (isinstance(self.slices, int) and 1 <= self.slices <= 400):
             raise KegelInputError("<argument>", "slices", self.slices, "an integer in [1, 400]")
         g = self.geometry
@@ -111,7 +118,7 @@ class RacewayContact:
         nominal = self.slice_geometry(*nominal_roller_pose(g))
         method = C.SliceMethod.alternative_slicing if self.method == "alternative_slicing" else C.SliceMethod.independent
         self.model = C.LineContactModel(self.slices, length, list(nominal["reduced_radius_m"]), self.E_reduced_Pa,
-                                        method)
+                                        method, getattr(C.ApproachReference, self.reference))
         self.data = C.LineContactData(self.model)
 
     def slice_geometry(self, p_RM: np.ndarray, a_R: np.ndarray) -> dict[str, np.ndarray]:

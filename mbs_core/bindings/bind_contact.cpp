@@ -95,9 +95,20 @@ void bind_contact(nb::module_& parent) {
 
   m.def("strip_influence_H", &strip_influence_H, "a"_a);
 
+  nb::enum_<ApproachReference>(m, "ApproachReference")
+      .value("palmgren", ApproachReference::Palmgren)
+      .value("half_space", ApproachReference::HalfSpace);
+  m.attr("REFERENCE_LINE_LOAD_N_M") = kReferenceLineLoad_N_m;
+  m.def("depth_displacement", &depth_displacement, "x1_m"_a, "x2_m"_a, "depth_m"_a, "E_reduced_Pa"_a,
+        "poisson"_a = kReferencePoisson,
+        "Boussinesq displacement at a depth below a slice from a unit line load on [x1, x2] (both bodies).");
+
   nb::class_<LineContactModel>(m, "LineContactModel", "Slices of a roller/raceway line contact.")
-      .def(nb::init<int, double, const std::vector<double>&, double, SliceMethod>(), "slices"_a, "length_m"_a,
-           "reduced_radius_m"_a, "E_reduced_Pa"_a, "method"_a)
+      .def(nb::init<int, double, const std::vector<double>&, double, SliceMethod, ApproachReference>(),
+           "slices"_a, "length_m"_a, "reduced_radius_m"_a, "E_reduced_Pa"_a, "method"_a,
+           "reference"_a = ApproachReference::Palmgren)
+      .def_prop_ro("reference_depth_m", &LineContactModel::reference_depth_m)
+      .def("set_reference_depth", &LineContactModel::set_reference_depth, "depth_m"_a)
       .def_prop_ro("slices", &LineContactModel::slices)
       .def_prop_ro("width_m", &LineContactModel::width_m)
       .def_prop_ro("length_m", &LineContactModel::length_m)

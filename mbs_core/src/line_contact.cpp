@@ -101,9 +101,15 @@ double strip_influence_dH(double a) noexcept {
 }
 
 // ---------------------------------------------------------------------------------------------
+double depth_displacement(double x1, double x2, double z, double E, double nu) noexcept {
+  auto r = [z](double x) { return x / std::sqrt(x * x + z * z); };
+  return (2.0 * (std::asinh(x2 / z) - std::asinh(x1 / z)) + (r(x2) - r(x1)) / (1.0 - nu)) / (kPi * E);
+}
+
 LineContactModel::LineContactModel(int n, double l, const std::vector<double>& R, double E,
-                                   SliceMethod method)
-    : n_(n), l_(l), w_(0.0), E_(E), R_(R), method_(method), k_slice_(0.0) {
+                                   SliceMethod method, ApproachReference reference)
+    : n_(n), l_(l), w_(0.0), E_(E), R_(R), method_(method), reference_(reference), k_slice_(0.0),
+      depth_m_(INFINITY) {
   if (n < 1 || n > 400) {
     throw std::invalid_argument("LineContactModel.slices = " + std::to_string(n) + ": expected 1..400");
   }
@@ -125,6 +131,72 @@ LineContactModel::LineContactModel(int n, double l, const std::vector<double>& R
     far_p2_[k] = 1.0 / (x2 * x2) - 1.0 / (x1 * x1);
     far_p4_[k] = 1.0 / (x2 * x2 * x2 * x2) - 1.0 / (x1 * x1 * x1 * x1);
   }
+  depth_.assign(n, 0.0);
+  if (method == SliceMethod::AlternativeSlicing && reference == ApproachReference::Palmgren) {
+    set_reference_depth(calibrate_reference_depth());
+  }
+}
+
+void LineContactModel::set_reference_depth(double z) {
+  if (!(z > 0.0)) detail::fail("LineContactModel", "reference_depth_m", z, "a value > 0 (infinity: half-space)");
+  depth_m_ = z;
+  if (std::isinf(z)) {
+    std::fill(depth_.begin(), depth_.end(), 0.0);
+    return;
+  }
+  depth_[0] = depth_displacement(-0.5 * w_, 0.5 * w_, z, E_);
+  for (int k = 1; k < n_; ++k) depth_[k] = depth_displacement((k - 0.5) * w_, (k + 0.5) * w_, z, E_);
+}
+
+double LineContactModel::calibrate_reference_depth() const {
+  // A flat line of this length and the mean reduced radius, 80 slices, at the calibration line
+  // load: find z with approach(z) = Palmgren's approach. approach falls monotonically with 1/z
+  // (the subtracted depth term grows), so a bracket on s = 1/z and Illinois steps suffice.
+  constexpr int kSlices = 80;
+  double Rm = 0.0;
+  for (double r : R_) Rm += r / n_;
+  LineContactModel cal(kSlices, l_, std::vector<double>(kSlices, Rm), E_, SliceMethod::AlternativeSlicing,
+                       ApproachReference::HalfSpace);
+  LineContactData d(cal);
+  const std::vector<double> flat(kSlices, 0.0);
+  const double Q = kReferenceLineLoad_N_m * l_;
+  const double target = palmgren_approach_m(Q, l_);
+  auto excess = [&](double s) {
+    cal.set_reference_depth(s > 0.0 ? 1.0 / s : INFINITY);
+    double a = 0.0;
+    if (solve_line_contact_load(cal, d, flat.data(), Q, a) != 0) {
+      throw std::runtime_error("LineContactModel: the reference-depth calibration did not converge (length_m = " +
+                               std::to_string(l_) + ")");
+    }
+    return a - target;
+  };
+  double lo = 0.0, flo = excess(lo);
+  if (flo <= 0.0) return INFINITY;  // the half-space is already as stiff as Palmgren
+  // the depth term of a depth equal to the line length already removes most of the far field
+  double hi = 1.0 / l_, fhi = excess(hi);
+  for (int k = 0; k < 20 && fhi > 0.0; ++k) {
+    lo = hi, flo = fhi;
+    hi *= 2.0;
+    fhi = excess(hi);
+  }
+  if (fhi > 0.0) throw std::runtime_error("LineContactModel: no reference depth reaches Palmgren's approach");
+  int side = 0;
+  double s = hi;
+  for (int k = 0; k < 100; ++k) {
+    s = (lo * fhi - hi * flo) / (fhi - flo);
+    const double f = excess(s);
+    if (std::abs(f) <= 1e-9 * target || hi - lo <= 1e-12 * hi) break;
+    if (f < 0.0) {
+      hi = s, fhi = f;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    } else {
+      lo = s, flo = f;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    }
+  }
+  return 1.0 / s;
 }
 
 void LineContactModel::influence_column(double b, double* v, double* t) const noexcept {
@@ -137,14 +209,15 @@ void LineContactModel::influence_column(double b, double* v, double* t) const no
   auto G = [](double a) { return a * strip_influence_dH(a); };
   double a_lo = 0.5 * w_ / b;
   double h_lo = strip_influence_H(a_lo), g_lo = t ? G(a_lo) : 0.0;
-  v[0] = c * 2.0 * h_lo;
+  const double* dz = depth_.data();
+  v[0] = c * 2.0 * h_lo - dz[0];
   if (t) t[0] = -c * g_lo;
   const double b2 = b * b, b4 = b2 * b2;
   int k = 1;
   for (; k < n_ && (k - 0.5) * w_ < 6.0 * b; ++k) {  // near field: the tabulated strip function
     const double a_hi = (k + 0.5) * w_ / b;
     const double h_hi = strip_influence_H(a_hi);
-    v[k] = c * (h_hi - h_lo);
+    v[k] = c * (h_hi - h_lo) - dz[k];
     h_lo = h_hi;
     if (t) {
       const double g_hi = G(a_hi);
@@ -157,7 +230,7 @@ void LineContactModel::influence_column(double b, double* v, double* t) const no
   const double* fl = far_log_.data();
   const double* f2 = far_p2_.data();
   const double* f4 = far_p4_.data();
-  for (int kk = k; kk < n_; ++kk) v[kk] = c0 * fl[kk] + c2 * f2[kk] - c4 * f4[kk];
+  for (int kk = k; kk < n_; ++kk) v[kk] = c0 * fl[kk] + c2 * f2[kk] - c4 * f4[kk] - dz[kk];
   if (t) {
     const double d2 = -0.5 * (-2.0 * c2), d4 = -0.5 * (4.0 * c4);
     for (int kk = k; kk < n_; ++kk) t[kk] = d2 * f2[kk] + d4 * f4[kk];
