@@ -15,8 +15,11 @@
 // Reference of the AST approach (ApproachReference). The half-space displacement is measured
 // against a point at infinite depth; for a line contact it grows with ln(l / b) without bound
 // (the 2D half-space has no finite approach at all), while a roller and a ring are finite
-// bodies. Following the finite-dimension correction of de Mul, Kalker and Fredriksson (ASME J.
-// Tribol. 108 (1986) 140-148), the approach is measured against points at a reference depth z
+// bodies. In the spirit of the finite-size adjustments of half-space contact models (de Mul,
+// Kalker and Vree, "An orthogonal uniform/parabolic surface pressure half-space element for
+// the analysis of non-Hertzian contact", Computational Mechanics, CIMNE 1998; their earlier
+// ASME J. Tribol. 108 (1986) 140-148 with Fredriksson is cited for it but was not checked
+// here), the approach is measured against points at a reference depth z
 // below each surface: the Boussinesq displacement at depth z under slice i (both bodies) is
 // subtracted from the surface displacement. kegel does not know the depth of a roller/ring pair
 // from first principles (for l = 20 mm, R' = 7.25 mm a depth of 8.5 mm, the 32216 roller's
