@@ -116,6 +116,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "power_balance_error": fr.power_balance_error,
             "cage_speed_rpm": fr.cage_speed_rad_s * 30 / math.pi,
             "cage_slip": fr.cage_slip,
+            "cage_model": fr.cage_model,
+            "roller_drift_m": fr.roller_drift_m,
             "torque_by_contact_Nm": fr.torque_by_contact_Nm(w),
             "torque_by_mechanism_Nm": fr.torque_by_mechanism_Nm(w),
             "power_W": fr.power_W,

@@ -127,7 +127,11 @@ class Fidelity:
     rib_cells
         Cells per side of the rib contact window (cell model).
     cage
-        Whether the cage and its pocket contacts are modelled.
+        Whether the cage is modelled. Quasi-static: free rollers (each loaded roller at its own
+        orbital speed, the cage at their time-mean speed, no pocket forces), falling back to
+        the pocket model when the rollers' drift exceeds the pocket clearance; ``false``: the
+        rollers at the cage speed without pocket forces. Dynamic: the cage as a body with its
+        pocket contacts.
     solution
         ``"quasi_static"`` or ``"dynamic"``.
     hydraulic

@@ -83,11 +83,15 @@ void bind_quasi_static(nb::module_& parent) {
         return status;
       },
       "model"_a, "data"_a, "loads"_a, "Solve the load distribution; 0 = converged.");
+  nb::enum_<CageModel>(m, "CageModel")
+      .value("off", CageModel::Off)
+      .value("pocket", CageModel::Pocket)
+      .value("free_rollers", CageModel::FreeRollers);
   m.def(
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
          const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
-         const SurfacePair& rib, int rib_cells, bool cage) {
+         const SurfacePair& rib, int rib_cells, CageModel cage) {
         BearingFriction f;
         const int status =
             evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f, rib_cells, cage);
@@ -99,6 +103,9 @@ void bind_quasi_static(nb::module_& parent) {
         d["cage_speed_rad_s"] = f.cage_speed_rad_s;
         d["cage_speed_pure_rolling_rad_s"] = f.cage_speed_pure_rolling_rad_s;
         d["roller_spin_rad_s"] = f.roller_spin_rad_s;
+        d["roller_orbit_rad_s"] = f.roller_orbit_rad_s;
+        d["roller_drift_m"] = f.roller_drift_m;
+        d["locked_rollers"] = f.locked_rollers;
         d["roller_spin_pure_rolling_rad_s"] = f.roller_spin_pure_rolling_rad_s;
         d["drive_torque_Nm"] = f.drive_torque_Nm;
         d["outer_ring_torque_Nm"] = f.outer_ring_torque_Nm;

@@ -178,7 +178,8 @@ bool secant(F f, double x0, double x1, double tol, double& root) {
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub, const FrictionParameters& fp,
                               const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
-                              int rib_cells, bool cage) noexcept {
+                              int rib_cells, CageModel cage_model) noexcept {
+  const bool cage = cage_model == CageModel::Pocket;  // pocket forces and friction
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
   std::vector<double> rib_h0;
   const auto& v = m.values();
@@ -459,6 +460,92 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     }
     cage_residual = spin_for_cage(w_c, spins);
   }
+  // FreeRollers: each loaded roller's own orbital speed and spin (two balances, 2 x 2 Newton
+  // with finite-difference derivatives, warm-started), then the cage at their time-mean speed
+  std::vector<double> orbit(Z, w_c);
+  out.locked_rollers = 0;
+  out.roller_drift_m = 0.0;
+  if (cage_model == CageModel::FreeRollers) {
+    if (int(d.orbit_ratio_.size()) != Z) d.orbit_ratio_.assign(Z, 1.0);
+    const double hr = 1e-7 * std::abs(wR0), ho = 1e-7 * std::abs(wc0);
+    std::vector<char> free(Zc, 0);
+    for (int j = 0; j < Zc; ++j) {
+      const Roller& r = rollers[j];
+      if (r.points.empty()) continue;
+      double wo = w_c * d.orbit_ratio_[j], wr = spins[j] * d.orbit_ratio_[j];
+      bool ok = false;
+      for (int it = 0; it < 40 && !ok; ++it) {
+        const Eval e0 = eval(r, wr, wo, w_i, lub, fp, race, ribp, false, false);
+        const Eval e1 = eval(r, wr + hr, wo, w_i, lub, fp, race, ribp, false, false);
+        const Eval e2 = eval(r, wr, wo + ho, w_i, lub, fp, race, ribp, false, false);
+        const double J11 = (e1.spin_moment - e0.spin_moment) / hr, J12 = (e2.spin_moment - e0.spin_moment) / ho;
+        const double J21 = (e1.axis_moment - e0.axis_moment) / hr, J22 = (e2.axis_moment - e0.axis_moment) / ho;
+        const double det = J11 * J22 - J12 * J21;
+        if (!(std::abs(det) > 1e-12 * std::abs(J11 * J22)) || !std::isfinite(det)) break;
+        double dr = -(J22 * e0.spin_moment - J12 * e0.axis_moment) / det;
+        double dO = -(-J21 * e0.spin_moment + J11 * e0.axis_moment) / det;
+        // at most 2 % of the pure-rolling speeds per step
+        const double lim = std::max({1.0, std::abs(dr) / (0.02 * std::abs(wR0)), std::abs(dO) / (0.02 * std::abs(wc0))});
+        dr /= lim;
+        dO /= lim;
+        wr += dr;
+        wo += dO;
+        if (!std::isfinite(wr) || !std::isfinite(wo) || std::abs(wo - wc0) > 0.5 * std::abs(wc0)) break;
+        ok = std::abs(dr) <= 1e-12 * std::abs(wR0) && std::abs(dO) <= 1e-12 * std::abs(wc0);
+      }
+      if (ok) {
+        spins[j] = wr;
+        orbit[j] = wo;
+        free[j] = 1;
+      } else {
+        ++out.locked_rollers;
+      }
+    }
+    // time-mean orbital speed over one revolution: the harmonic mean over the azimuths, where
+    // the unloaded and the locked rollers move with the cage
+    double n_free = 0.0, inv = 0.0;
+    for (int j = 0; j < Zc; ++j) {
+      if (!free[j]) continue;
+      n_free += 1.0;
+      inv += 1.0 / orbit[j];
+    }
+    if (n_free > 0.0) {
+      w_c = n_free / inv;
+      for (int j = 0; j < Zc; ++j) {
+        if (free[j]) continue;
+        orbit[j] = w_c;
+        const Roller& r = rollers[j];
+        if (r.points.empty()) {
+          spins[j] = wR0 * w_c / wc0;
+          continue;
+        }
+        // a locked roller: its spin balance at the new cage speed (secant from the last spin)
+        auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, false).spin_moment; };
+        double root = spins[j];
+        if (!secant(S, spins[j], spins[j] * (1.0 + 1e-7), 1e-13 * std::abs(wR0), root)) status = 1;
+        spins[j] = root;
+      }
+      for (int j = Zc; j < Z; ++j) {
+        spins[j] = spins[0];
+        orbit[j] = orbit[0];
+      }
+      // the accumulated lead of a roller over its pocket, travelling once round in the
+      // direction of the cage's motion, from pocket azimuth to pocket azimuth
+      const double step = 2.0 * kPi / Z * v.pitch_radius_m;
+      double lead = 0.0, lo = 0.0, hi = 0.0;
+      for (int k = 0; k < Z; ++k) {
+        const int j = w_c >= 0.0 ? k : (Z - k) % Z;
+        lead += step * (1.0 - w_c / orbit[j]);
+        lo = std::min(lo, lead);
+        hi = std::max(hi, lead);
+      }
+      out.roller_drift_m = hi - lo;
+    }
+    for (int j = 0; j < Zc; ++j) d.orbit_ratio_[j] = orbit[j] / w_c;
+    // the cage balance residual is zero by construction (no pocket forces)
+    cage_residual = 0.0;
+  }
+  out.roller_orbit_rad_s = orbit;
   out.cage_residual_Nm = cage_residual;
   out.cage_speed_rad_s = w_c;
   out.roller_spin_rad_s = spins;
@@ -475,7 +562,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     out.phi_max[k] = 0.0;
   }
   for (int j = 0; j < Zc; ++j) {
-    const Eval ev = eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, true, cage);
+    const Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub, fp, race, ribp, true, cage);
     out.cage_power_W += weight * ev.pocket_W;
     t_in += weight * ev.torque_inner;
     t_out += weight * ev.torque_outer;

@@ -467,15 +467,16 @@ def test_a_load_change_settles_on_the_quasi_static_equilibrium(setup):
 def test_under_combined_load_the_rollers_do_not_touch_the_cage(setup):
     """32216, Table 2 loads (Fa 6 kN, Fr 6.5 kN), 2000 rpm: the rollers move only microns in
     their pockets and never touch the cage, so the dynamic torque matches the quasi-static one
-    without the pocket friction; the quasi-static pocket model (each roller's circumferential
-    load on its pocket, Eq. 37) adds about 15 % here. Recorded, not a target: it says which
-    quasi-static assumption the dynamic model does not confirm."""
+    with free rollers (the default); the quasi-static pocket model (each roller's
+    circumferential load on its pocket, Eq. 37) adds about 15 % here. The dynamic model is why
+    the quasi-static default is the free-roller model."""
     g, b, m, lub, fr = setup
     w = 2000 * RPM
     kw = dict(temperature_K=323.15, inner_speed_rad_s=w, axial_N=6000.0, radial_N=6500.0, slices=8,
               method="independent")
-    _, with_pockets = bearing_friction(g, b, m, lub, fr, cage=True, **kw)
-    _, free = bearing_friction(g, b, m, lub, fr, cage=False, **kw)
+    _, with_pockets = bearing_friction(g, b, m, lub, fr, cage="pocket", **kw)
+    _, free = bearing_friction(g, b, m, lub, fr, cage=True, **kw)
+    assert free.cage_model == "free_rollers"
     r = simulate(g, b, m, lub, fr, temperature_K=323.15, speed_profile=[(0, w)], duration_s=0.012, axial_N=6000.0,
                  radial_N=6500.0, slices=8, output_interval_s=4e-4, threads=2)
     assert r.series["roller_cage_N"].max() == 0.0

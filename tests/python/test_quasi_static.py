@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 import kegel
+from kegel.errors import KegelInputError
 from kegel.quasi_static import bearing_model, load_distribution
 from kegel.tribology import axial_roller_loads
 
@@ -177,11 +179,53 @@ def test_cage_pocket_friction_adds_power_and_keeps_the_balance(b32216, oil):
     kw = dict(temperature_K=323.15, inner_speed_rad_s=2000 * RPM, axial_N=6000.0, radial_N=6500.0,
               method="independent", slices=15)
     _, off = bearing_friction(g, b, m, lub, fr, cage=False, **kw)
-    _, on = bearing_friction(g, b, m, lub, fr, cage=True, **kw)
+    _, on = bearing_friction(g, b, m, lub, fr, cage="pocket", **kw)
+    assert on.cage_model == "pocket"
     assert off.cage_power_W == 0.0 and on.cage_power_W > 0.0
     assert abs(on.power_balance_error) < 5e-3
     assert on.drive_torque_Nm > off.drive_torque_Nm
     assert on.torque_by_contact_Nm(2000 * RPM)["cage"] == pytest.approx(on.cage_power_W / (2000 * RPM))
+
+
+def test_free_rollers_balance_each_roller_without_pocket_forces(b32216, oil):
+    # Combined load: every loaded roller finds its own orbital speed (faster or slower than the
+    # cage around the load zone), no pocket force, the cage at the harmonic mean of the orbits.
+    g, b, m = b32216
+    lub, fr = oil
+    w = 2000 * RPM
+    kw = dict(temperature_K=323.15, inner_speed_rad_s=w, axial_N=6000.0, radial_N=6500.0,
+              method="independent", slices=15)
+    dist, f = bearing_friction(g, b, m, lub, fr, cage=True, **kw)
+    assert f.cage_model == "free_rollers" and f.converged and f.locked_rollers == 0
+    assert f.cage_power_W == 0.0
+    assert abs(f.power_balance_error) < 5e-3
+    orbit = f.roller_orbit_rad_s
+    assert dist.inner_N.max() > 1.5 * dist.inner_N.min()  # unequal roller loads round the bearing
+    # the orbits differ from roller to roller, by little
+    assert orbit.std() > 0.0
+    assert np.allclose(orbit, f.cage_speed_rad_s, rtol=1e-3)
+    # the cage speed is the harmonic mean over the azimuths (unloaded rollers move with the cage)
+    assert len(orbit) / np.sum(1.0 / orbit) == pytest.approx(f.cage_speed_rad_s, rel=1e-12)
+    # the drift over a revolution, rebuilt from the orbits, and far inside the pocket clearance
+    lead = np.cumsum(2 * np.pi / len(orbit) * 0.5 * g.pitch_diameter_m * (1 - f.cage_speed_rad_s / orbit))
+    span = max(lead.max(), 0.0) - min(lead.min(), 0.0)
+    assert f.roller_drift_m == pytest.approx(span, rel=1e-9)
+    assert 0.0 < f.roller_drift_m < 0.1 * g.cage_pocket_clearance_circumferential_m
+    # the pocket model loads the pockets instead and costs more torque
+    _, pocket = bearing_friction(g, b, m, lub, fr, cage="pocket", **kw)
+    assert pocket.drive_torque_Nm > 1.1 * f.drive_torque_Nm
+    # axisymmetric load: every roller alike, free rollers orbit with the cage
+    _, ax = bearing_friction(g, b, m, lub, fr, cage=True, **{**kw, "radial_N": 0.0})
+    assert ax.roller_drift_m == 0.0 and np.allclose(ax.roller_orbit_rad_s, ax.cage_speed_rad_s, rtol=1e-14)
+    with pytest.raises(KegelInputError, match="cage"):
+        bearing_friction(g, b, m, lub, fr, cage="loose", **kw)
+    # pockets tighter than the drift: the default falls back to the pocket model
+    tight = dataclasses.replace(g, cage_pocket_clearance_circumferential_m=0.5 * f.roller_drift_m)
+    _, fb = bearing_friction(tight, b, m, lub, fr, cage=True, **kw)
+    assert fb.cage_model == "pocket" and fb.cage_power_W > 0.0
+    # ... but not when the free rollers are asked for explicitly
+    _, forced = bearing_friction(tight, b, m, lub, fr, cage="free_rollers", **kw)
+    assert forced.cage_model == "free_rollers"
 
 
 @pytest.mark.parametrize("slices,method", [(10, "independent"), (30, "independent"), (30, "alternative_slicing")])

@@ -117,6 +117,23 @@ struct RollerState {
   bool has_jacobian = false;
 };
 
+/// How the quasi-static friction treats the cage.
+///  - Off: every roller orbits at the cage speed; no pocket forces (their balance is not closed).
+///  - Pocket: every roller orbits at the cage speed, and its pocket takes its circumferential
+///    load, with Coulomb friction (Eq. 37) braking its spin. Under a radial load the loaded
+///    rollers then push or brake the cage at every azimuth.
+///  - FreeRollers: every loaded roller orbits at the speed at which its own contact forces have
+///    no circumferential resultant (and spins at the speed that balances its spin moments), so
+///    it needs no pocket force; the cage turns at the time-mean orbital speed of a roller
+///    travelling once round (the harmonic mean over the azimuths; unloaded rollers coast with
+///    the cage). The rollers then drift back and forth in their pockets by
+///    BearingFriction::roller_drift_m, which must stay inside the pocket clearance for the model
+///    to hold (kegel.quasi_static checks it and falls back to Pocket). The dynamic simulation
+///    (issue 6) shows this regime under the seed paper's combined loads: the rollers move
+///    +-6 um in +-170 um pockets and never touch the cage. A loaded roller whose two balances
+///    cannot be solved (e.g. one raceway contact only) keeps the cage speed without a pocket force.
+enum class CageModel { Off = 0, Pocket = 1, FreeRollers = 2 };
+
 struct BearingFriction;
 
 /// State and workspace (warm start: the previous solution).
@@ -137,7 +154,8 @@ class BearingData {
   friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
                                        const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
-                                       const SurfacePair&, BearingFriction&, int, bool) noexcept;
+                                       const SurfacePair&, BearingFriction&, int, CageModel) noexcept;
+  std::vector<double> orbit_ratio_;  // roller orbit / cage speed (FreeRollers warm start)
   std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
   double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
   std::vector<double> dSw_, dSc_, dAw_, dAc_;  // spin/cage balance derivatives, reused (chord)
@@ -171,6 +189,11 @@ struct BearingFriction {
   double cage_speed_rad_s = 0.0;
   double cage_speed_pure_rolling_rad_s = 0.0;
   std::vector<double> roller_spin_rad_s, roller_spin_pure_rolling_rad_s;
+  std::vector<double> roller_orbit_rad_s;  ///< orbital speed of each roller (FreeRollers; else the cage's)
+  /// FreeRollers: circumferential excursion of a roller relative to its pocket over one
+  /// revolution (max - min of the accumulated orbital lead), at the pitch radius [m]
+  double roller_drift_m = 0.0;
+  int locked_rollers = 0;  ///< FreeRollers: loaded rollers kept at the cage speed (no solution)
   double drive_torque_Nm = 0.0;       ///< torque the shaft puts on the inner ring
   double outer_ring_torque_Nm = 0.0;  ///< reaction torque on the outer ring (the measured one)
   double power_input_W = 0.0;         ///< drive torque x inner-ring speed
@@ -184,8 +207,7 @@ struct BearingFriction {
 
 /// Evaluate the friction at the load distribution in data (solve_load_distribution first).
 /// @return 0 on success, 1 if the cage or a roller balance did not converge, -1 bad input.
-/// cage = true adds the friction of the cage pockets (Eq. 37): each pocket takes its roller's
-/// circumferential load, and that normal force's Coulomb friction brakes the roller's spin.
+/// cage: see CageModel (Pocket adds the friction of the cage pockets, Eq. 37).
 /// rib_cells = 0 evaluates the rib as one elliptic contact; rib_cells = n > 0 solves its pressure
 /// field with the cell model (n x n cells over 3 Hertz semi-axes each way, FFT + CG) for the
 /// rib load and evaluates every loaded cell with its own velocities (the drilling friction).
@@ -193,11 +215,11 @@ int evaluate_bearing_friction(const BearingModel& model, BearingData& data, cons
                               double inner_speed_rad_s, const ContactLubricantState& lubricant,
                               const FrictionParameters& friction, const SurfacePair& raceway,
                               const SurfacePair& rib, BearingFriction& out, int rib_cells = 0,
-                              bool cage = true) noexcept;
+                              CageModel cage = CageModel::FreeRollers) noexcept;
 
 /// Solve the load distribution. An axisymmetric load case (no radial load, no tilt moment, no
 /// misalignment, tilt imposed) is solved for one roller and replicated: every roller then
-/// carries the same loads by symmetry. @return 0 on convergence (ring residual below 1e-10 of the load
+/// carries the same loads by symmetry. @return 0 on convergence (ring residual below 1e-9 of the load
 /// scale), 1 if not converged, -1 for invalid loads.
 int solve_load_distribution(const BearingModel& model, BearingData& data, const BearingLoads& loads) noexcept;
 
