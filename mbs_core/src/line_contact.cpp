@@ -15,6 +15,31 @@ constexpr double kPi = 3.14159265358979323846;
 // Palmgren (N, mm): delta = 3.84e-5 Q^0.9 / l^0.8  <=>  Q = delta^(10/9) l^(8/9) 3.84e-5^(-10/9).
 // In SI (delta, l in m): Q = delta^(10/9) l^(8/9) * 3.84e-5^(-10/9) * 1e3^(10/9 + 8/9).
 const double kPalmgrenSI = std::pow(3.84e-5, -10.0 / 9.0) * 1e6;
+
+// Illinois (regula falsi with halving of the retained end's value) on a bracket f(a) f(b) < 0;
+// stops when |f| <= ftol or the bracket is narrower than xtol. false: no convergence or a
+// non-finite f.
+template <class F>
+bool illinois(F f, double a, double fa, double b, double fb, double ftol, double xtol, double& root) {
+  int side = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double x = (a * fb - b * fa) / (fb - fa);
+    const double fx = f(x);
+    if (!std::isfinite(fx)) return false;
+    root = x;
+    if (std::abs(fx) <= ftol || std::abs(b - a) <= xtol) return true;
+    if ((fx > 0.0) == (fb > 0.0)) {
+      b = x, fb = fx;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    } else {
+      a = x, fa = fx;
+      if (side == -1) fb *= 0.5;
+      side = -1;
+    }
+  }
+  return false;
+}
 }  // namespace
 
 double palmgren_approach_m(double Q, double l) noexcept {
@@ -180,21 +205,10 @@ double LineContactModel::calibrate_reference_depth() const {
     fhi = excess(hi);
   }
   if (fhi > 0.0) throw std::runtime_error("LineContactModel: no reference depth reaches Palmgren's approach");
-  int side = 0;
   double s = hi;
-  for (int k = 0; k < 100; ++k) {
-    s = (lo * fhi - hi * flo) / (fhi - flo);
-    const double f = excess(s);
-    if (std::abs(f) <= 1e-9 * target || hi - lo <= 1e-12 * hi) break;
-    if (f < 0.0) {
-      hi = s, fhi = f;
-      if (side == 1) flo *= 0.5;
-      side = 1;
-    } else {
-      lo = s, flo = f;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    }
+  if (!illinois(excess, lo, flo, hi, fhi, 1e-9 * target, 1e-12 * hi, s)) {
+    throw std::runtime_error("LineContactModel: the reference-depth calibration did not converge (length_m = " +
+                             std::to_string(l_) + ")");
   }
   return 1.0 / s;
 }
@@ -463,27 +477,10 @@ int solve_line_contact_load(const LineContactModel& m, LineContactData& d, const
     fhi = F(hi);
   }
   if (!(fhi >= 0.0)) return 1;
-  // Illinois (regula falsi with halving)
-  int side = 0;
-  for (int k = 0; k < 200; ++k) {
-    const double x = (lo * fhi - hi * flo) / (fhi - flo);
-    const double fx = F(x);
-    if (!std::isfinite(fx)) return 1;
-    if (std::abs(fx) <= 1e-10 * force || std::abs(hi - lo) <= 1e-15) {
-      approach = x;
-      return 0;
-    }
-    if (fx > 0.0) {
-      hi = x, fhi = fx;
-      if (side == 1) flo *= 0.5;
-      side = 1;
-    } else {
-      lo = x, flo = fx;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    }
-  }
-  return 1;
+  double x = lo;
+  if (!illinois(F, lo, flo, hi, fhi, 1e-10 * force, 1e-15, x)) return 1;
+  approach = x;
+  return 0;
 }
 
 }  // namespace kegel
