@@ -40,7 +40,8 @@ def main(levels: list[str]) -> int:
                      "runtime_s": data["runtime_s"], "iterations": it,
                      "s_per_iteration": data["runtime_s"] / max(it, 1),
                      "inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
-                     "loss_torque_Nm": data["loss_torque_at_shaft_Nm"], "steady": data["steady"]})
+                     "loss_torque_Nm": data["loss_torque_at_shaft_Nm"], "steady": data["steady"],
+                     "angular_momentum_balance": data["angular_momentum_balance"]["relative_to_drive_torque"]})
     ref = rows[-1]
     for r in rows:
         r["deviation_inner_ring"] = r["inner_ring_Nm"] / ref["inner_ring_Nm"] - 1
@@ -49,11 +50,11 @@ def main(levels: list[str]) -> int:
     out.mkdir(exist_ok=True)
     atomic_write_json(out / "cfd_mesh_levels.json", {"reference_level": ref["level"], "rows": rows})
     print(f"{'level':<7}{'cells':>9}{'mesh s':>8}{'run s':>8}{'s/it':>7}{'iters':>7}"
-          f"{'M_IR mN m':>11}{'loss mN m':>11}{'dev loss':>10}")
+          f"{'M_IR mN m':>11}{'loss mN m':>11}{'dev loss':>10}{'balance':>9}")
     for r in rows:
         print(f"{r['level']:<7}{r['cells']:>9}{r['mesh_time_s']:>8.1f}{r['runtime_s']:>8.0f}{r['s_per_iteration']:>7.2f}"
               f"{r['iterations']:>7.0f}{1e3 * r['inner_ring_Nm']:>11.2f}{1e3 * r['loss_torque_Nm']:>11.2f}"
-              f"{100 * r['deviation_loss_torque']:>9.1f}%")
+              f"{100 * r['deviation_loss_torque']:>9.1f}%{100 * r['angular_momentum_balance']:>8.1f}%")
     try:
         import matplotlib
 
