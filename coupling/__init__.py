@@ -2,9 +2,12 @@
 
 Mapped into the import package as ``kegel.coupling``. :mod:`.flow_forces` fits closed-form
 flow-force laws to a correlation or a CFD result and hands them to the dynamic simulation as
-force elements, so the oil acts on the rollers and the cage.
+force elements, so the oil acts on the rollers and the cage; :mod:`.cfd_results` finds the CFD
+result of an operating point.
 """
 
+from .cfd_results import cfd_result_files, find_cfd_result
 from .flow_forces import FlowForceLaw, flow_forces_from_cfd, flow_forces_from_correlation
 
-__all__ = ["FlowForceLaw", "flow_forces_from_cfd", "flow_forces_from_correlation"]
+__all__ = ["FlowForceLaw", "cfd_result_files", "find_cfd_result", "flow_forces_from_cfd",
+           "flow_forces_from_correlation"]

@@ -104,12 +104,20 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
                                     oil_level_m=scene.lubrication.oil_level_m,
                                     cage_speed_rad_s=fr.cage_speed_rad_s)
+        hyd_torque = hyd.total_Nm if hyd else 0.0
+        hyd_out = hyd.as_dict() if hyd else None
+        if fid.hydraulic == "cfd":
+            # the CFD loss torque of this point (hydraulic power / shaft speed), as computed
+            cfd, cfd_file = _cfd_result(scene, op)
+            hyd_torque = cfd["loss_torque_at_shaft_Nm"]
+            hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
+                       "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
         w = op.speed_rad_s
         point = {
             **op.as_dict(),
             "friction_torque_Nm": fr.drive_torque_Nm,
-            "hydraulic_torque_Nm": hyd.total_Nm if hyd else 0.0,
-            "total_torque_Nm": fr.drive_torque_Nm + (hyd.total_Nm if hyd else 0.0),
+            "hydraulic_torque_Nm": hyd_torque,
+            "total_torque_Nm": fr.drive_torque_Nm + hyd_torque,
             "outer_ring_torque_Nm": fr.outer_ring_torque_Nm,
             "power_input_W": fr.power_input_W,
             "power_dissipated_W": fr.power_dissipated_W,
@@ -123,7 +131,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "power_W": fr.power_W,
             "Lambda_min": fr.Lambda_min,
             "phi_max": fr.phi_max,
-            "hydraulic": hyd.as_dict() if hyd else None,
+            "hydraulic": hyd_out,
             "roller_azimuth_rad": dist.azimuth_rad.tolist(),
             "roller_outer_N": dist.outer_N.tolist(),
             "roller_inner_N": dist.inner_N.tolist(),
@@ -165,7 +173,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
     checkpoint after an interrupt)."""
-    from .coupling import flow_forces_from_correlation
+    from .coupling import flow_forces_from_cfd, flow_forces_from_correlation
     from .dynamics import simulate, write_result
 
     g, b, m, fid, dyn = scene.geometry, scene.bearing, scene.material, scene.fidelity, scene.dynamic
@@ -184,6 +192,13 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
         hyd0 = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
                                  oil_level_m=scene.lubrication.oil_level_m, cage_speed_rad_s=wc0)
         law = flow_forces_from_correlation(hyd0, g, density_kg_m3=state.density_kg_m3, cage_speed_rad_s=wc0)
+        elements.append(law.element())
+    cfd = None
+    if fid.hydraulic == "cfd":
+        # the CFD result of this point: rollers and cage through the fitted force law, the oil's
+        # torque on the inner ring and the shaft (turning with the prescribed speed) on top
+        cfd, cfd_file = _cfd_result(scene, op)
+        law = flow_forces_from_cfd(cfd, g)
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
@@ -209,6 +224,13 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
     roller_drag = st["external_power_W"] / w if w else 0.0
     friction = st["drive_torque_Nm"] - roller_drag
     churning = (hyd.components["churning_inner_ring_Nm"] + hyd.components["churning_outer_ring_Nm"]) if hyd else 0.0
+    hyd_out = ({**hyd.as_dict(), "roller_drag_on_the_bodies_Nm": roller_drag, "flow_force_law": law.as_dict()}
+               if hyd else None)
+    if cfd is not None:
+        churning = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
+        hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
+                   "inner_ring_and_shaft_Nm": churning, "roller_drag_on_the_bodies_Nm": roller_drag,
+                   "flow_force_law": law.as_dict(), "cfd_point": cfd["point"]}
     power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
     by_contact = {c: sum(power[c].values()) / w for c in CONTACTS}
     by_contact["cage"] = st["cage_power_W"] / w
@@ -239,8 +261,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
         "power_W": power,
         "Lambda_min": {c: float(res.series[f"Lambda_min_{c}"][-1]) for c in CONTACTS},
         "phi_max": {c: float(res.series[f"phi_max_{c}"][-1]) for c in CONTACTS},
-        "hydraulic": ({**hyd.as_dict(), "roller_drag_on_the_bodies_Nm": roller_drag,
-                       "flow_force_law": law.as_dict()} if hyd else None),
+        "hydraulic": hyd_out,
         "roller_azimuth_rad": (2 * np.pi * np.arange(Z) / Z).tolist(),
         **last,
         "axial_force_N": -float(res.series["ring_force_N"][-1][2]),
@@ -253,6 +274,18 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
                     "wall_time_per_revolution_s": res.runtime_s / res.revolutions if res.revolutions else None,
                     "files": files},
     }
+
+
+def _cfd_result(scene: Scene, op) -> tuple[dict[str, Any], Path]:
+    """The ``kegel cfd run`` result of an operating point (``[model] cfd_results``)."""
+    from .coupling import find_cfd_result
+
+    lub = scene.lubrication
+    return find_cfd_result(scene.fidelity.cfd_results, bearing=scene.bearing.designation,
+                           lubricant=scene.lubricant.name, speed_rad_s=op.speed_rad_s,
+                           temperature_K=op.temperature_K, oil_level_m=lub.oil_level_m,
+                           flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m,
+                           source=scene.source, key="model.cfd_results")
 
 
 def _csv(points: list[dict[str, Any]]) -> str:

@@ -99,7 +99,8 @@ _ALLOWED: dict[str, set[str]] = {
         "temperature",
     },
     "lubrication": {"mode", "oil_level"},
-    "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic"},
+    "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
+              "cfd_results"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
@@ -135,7 +136,12 @@ class Fidelity:
     solution
         ``"quasi_static"`` or ``"dynamic"``.
     hydraulic
-        ``"none"``, ``"correlation"`` or ``"cfd"``.
+        ``"none"``, ``"correlation"`` (Liebrecht, Eq. 38-40) or ``"cfd"`` (the ``kegel cfd run``
+        result of each operating point, see ``cfd_results``).
+    cfd_results
+        With ``hydraulic = "cfd"``: a CFD ``results.json`` or a folder holding them (relative
+        paths from the working directory, as ``output.directory``); see
+        :func:`kegel.coupling.find_cfd_result`.
     """
 
     name: str
@@ -146,6 +152,7 @@ class Fidelity:
     cage: bool
     solution: str
     hydraulic: str
+    cfd_results: str | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -497,6 +504,17 @@ def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> 
     if opts["hydraulic"] != "none" and lubrication_mode == "minimum_quantity":
         raise reader.error("model.hydraulic", opts["hydraulic"],
                            "'none' for minimum-quantity lubrication (no oil bath to churn)")
+    if "cfd_results" in model:
+        v = model["cfd_results"]
+        if opts["hydraulic"] != "cfd":
+            raise reader.error("model.cfd_results", v, 'no value unless model.hydraulic = "cfd"')
+        if not isinstance(v, str) or not v or not Path(v).exists():
+            raise reader.error("model.cfd_results", v,
+                               "an existing CFD results.json or folder of them (relative to the working directory)")
+        opts["cfd_results"] = v
+    elif opts["hydraulic"] == "cfd":
+        raise reader.error("model.cfd_results", None,
+                           'a CFD results.json or folder of them (kegel cfd run), needed by hydraulic = "cfd"')
     return Fidelity(name=preset + ("+custom" if custom else ""), **opts)
 
 

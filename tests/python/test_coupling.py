@@ -15,6 +15,7 @@ from kegel.correlations import hydraulic_torques
 from kegel.coupling import flow_forces_from_cfd, flow_forces_from_correlation
 from kegel.coupling.flow_forces import orbit_radius_m
 from kegel.dynamics import D, dynamic_model
+from kegel.scene import scene_from_dict
 from kegel.tribology import load_friction
 
 RPM = math.pi / 30
@@ -100,30 +101,31 @@ def test_the_cfd_law_reproduces_the_cfd_forces_at_its_kinematics(b32216, tmp_pat
         flow_forces_from_cfd(tmp_path / "missing.json", g)
 
 
-def test_an_oil_bath_scene_runs_dynamically_with_the_oil_on_the_rollers(tmp_path):
-    from conftest import run_kegel
-
-    scene = """
+_BATH_SCENE = """
 [bearing]
 designation = "32216"
 [lubricant]
 name = "FVA3"
 [operating]
 axial_load = "6 kN"
-speed = "2000 rpm"
+speed = {speed}
 temperature = "50 degC"
 [lubrication]
 mode = "oil_bath"
 oil_level = "flooded"
 [model]
 fidelity = "fast"
-solution = "dynamic"
-[dynamic]
-duration = "2 ms"
-output_interval = "0.2 ms"
+{model}
 [output]
 directory = "out"
 """
+_DYNAMIC = 'solution = "dynamic"\n[dynamic]\nduration = "2 ms"\noutput_interval = "0.2 ms"'
+
+
+def test_an_oil_bath_scene_runs_dynamically_with_the_oil_on_the_rollers(tmp_path):
+    from conftest import run_kegel
+
+    scene = _BATH_SCENE.format(speed='"2000 rpm"', model=_DYNAMIC)
     (tmp_path / "bath.toml").write_text(scene)
     res = run_kegel("run", "bath.toml", cwd=tmp_path, timeout=300)
     assert res.returncode == 0, res.stderr
@@ -137,3 +139,79 @@ directory = "out"
     # the element's drag equals the correlation's roller-set drag within the cage slip
     assert h["roller_drag_on_the_bodies_Nm"] == pytest.approx(
         h["components"]["drag_rollers_Nm"] * p["cage_speed_rpm"] / p["speed_rpm"], rel=0.05)
+
+
+def _cfd_result_file(path, g, speed_rpm, *, flooded=True, temperature_K=323.15):
+    """A results.json as `kegel cfd run` writes it, with round numbers: orbit drag 1 mN m per roller,
+    spin torque 0.2 mN m, cage -1 mN m, inner ring -20 mN m, shaft -5 mN m, loss torque 40 mN m."""
+    from kegel.cfd_cases.run import kinematics
+
+    kin = kinematics(g, speed_rpm * RPM)
+    Z = g.roller_count
+    rollers = [{"name": f"roller_{k:02d}", "force_N": [0.0, 0.0, 0.0], "moment_about_centre_Nm": [0.0, 0.0, 0.0],
+                "spin_torque_Nm": {"total": 2e-4}, "moment_about_bearing_axis_Nm": -1e-3} for k in range(Z)]
+    total = {"inner_ring": -20e-3, "shaft": -5e-3, "outer_ring": 10e-3, "housing": 8e-3, "cage": -1e-3}
+    res = {"point": {"bearing": g.designation, "lubricant": "FVA3", "speed_rad_s": speed_rpm * RPM,
+                     "temperature_K": temperature_K, "oil_level_m": None if flooded else 0.05},
+           "kinematics": kin, "rollers": rollers, "cage": {"force_N": [0, 0, 0], "moment_Nm": [0.0, 0.0, -1e-3]},
+           "torques_Nm": {k: {"total": v} for k, v in total.items()}, "loss_torque_at_shaft_Nm": 40e-3,
+           "steady": True}
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(res))
+    return res
+
+
+
+
+_CFD = 'hydraulic = "cfd"\ncfd_results = "cfd"'
+
+
+def test_a_scene_takes_each_points_cfd_result(b32216, tmp_path):
+    from conftest import run_kegel
+
+    g = b32216[0]
+    _cfd_result_file(tmp_path / "cfd" / "a" / "results.json", g, 1000.0)
+    _cfd_result_file(tmp_path / "cfd" / "b" / "results.json", g, 2000.0)
+    _cfd_result_file(tmp_path / "cfd" / "c" / "results.json", g, 2000.0, flooded=False)  # another oil level
+    (tmp_path / "s.toml").write_text(_BATH_SCENE.format(speed='["1000 rpm", "2000 rpm"]', model=_CFD))
+    res = run_kegel("run", "s.toml", cwd=tmp_path, timeout=300)
+    assert res.returncode == 0, res.stderr
+    pts = json.loads((tmp_path / "out" / "results.json").read_text())["points"]
+    for p, sub in zip(pts, ("a", "b")):
+        assert p["hydraulic_torque_Nm"] == pytest.approx(40e-3)
+        assert p["total_torque_Nm"] == pytest.approx(p["friction_torque_Nm"] + 40e-3)
+        assert p["hydraulic"]["source"] == "cfd" and p["hydraulic"]["file"].endswith(f"{sub}/results.json")
+    # a point without its CFD result: the error names the key and lists what there is
+    (tmp_path / "t.toml").write_text(_BATH_SCENE.format(speed='"3000 rpm"', model=_CFD))
+    res = run_kegel("run", "t.toml", cwd=tmp_path, timeout=300)
+    assert res.returncode != 0
+    assert "model.cfd_results" in res.stderr and "3000 rpm" in res.stderr and "1000 rpm" in res.stderr
+
+
+def test_cfd_results_scene_keys_are_checked(b32216, tmp_path):
+    base = {"bearing": {"designation": "32216"}, "lubricant": {"name": "FVA3"},
+            "operating": {"axial_load": "6 kN", "speed": "2000 rpm", "temperature": "50 degC"},
+            "lubrication": {"mode": "oil_bath", "oil_level": "flooded"}}
+    with pytest.raises(kegel.KegelInputError, match="model.cfd_results.*needed by hydraulic"):
+        scene_from_dict({**base, "model": {"hydraulic": "cfd"}})
+    with pytest.raises(kegel.KegelInputError, match="model.cfd_results.*existing"):
+        scene_from_dict({**base, "model": {"hydraulic": "cfd", "cfd_results": str(tmp_path / "nothing")}})
+    with pytest.raises(kegel.KegelInputError, match="model.cfd_results.*unless"):
+        scene_from_dict({**base, "model": {"hydraulic": "correlation", "cfd_results": str(tmp_path)}})
+
+
+def test_a_dynamic_scene_puts_the_cfd_forces_on_the_bodies(b32216, tmp_path):
+    from conftest import run_kegel
+
+    g = b32216[0]
+    _cfd_result_file(tmp_path / "cfd" / "results.json", g, 2000.0)
+    (tmp_path / "d.toml").write_text(_BATH_SCENE.format(speed='"2000 rpm"', model=_CFD + "\n" + _DYNAMIC))
+    res = run_kegel("run", "d.toml", cwd=tmp_path, timeout=300)
+    assert res.returncode == 0, res.stderr
+    p = json.loads((tmp_path / "out" / "results.json").read_text())["points"][0]
+    h = p["hydraulic"]
+    assert h["source"] == "cfd" and h["inner_ring_and_shaft_Nm"] == pytest.approx(25e-3)
+    # rollers and cage through the force law: at the CFD's kinematics their power is
+    # Z (1 mN m) w_c + Z (0.2 mN m) |spin| + (1 mN m) w_c, about the CFD's 15 mN m loss share
+    assert h["roller_drag_on_the_bodies_Nm"] > 0
+    assert p["hydraulic_torque_Nm"] == pytest.approx(h["roller_drag_on_the_bodies_Nm"] + 25e-3, rel=1e-12)
