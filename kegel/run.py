@@ -198,7 +198,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
         # the CFD result of this point: rollers and cage through the fitted force law, the oil's
         # torque on the inner ring and the shaft (turning with the prescribed speed) on top
         cfd, cfd_file = _cfd_result(scene, op)
-        law = flow_forces_from_cfd(cfd, g)
+        law = flow_forces_from_cfd(cfd_file, g)  # the law names the file it came from
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
