@@ -209,11 +209,25 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       const bool x_minor = m.rib_Rx_m() <= m.rib_Ry_m();
       const double dx = 6.0 * (x_minor ? hz.semi_minor_m : hz.semi_major_m) / rib_cells;
       const double dy = 6.0 * (x_minor ? hz.semi_major_m : hz.semi_minor_m) / rib_cells;
-      const bool reuse = d.rib_grid_ && d.rib_grid_->nx() == rib_cells && dx > 0.8 * d.rib_dx_ && dx < 1.25 * d.rib_dx_;
-      if (!reuse) {
-        d.rib_grid_ = std::make_shared<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
-        d.rib_fields_.clear();
-        for (int j = 0; j < Z; ++j) d.rib_fields_.push_back(std::make_shared<CellContactData>(*d.rib_grid_));
+      // The grid is always the one this load calls for, so a point's result does not depend on
+      // the points solved before it (reusing a grid within 20 % of the size moved the 32216's
+      // torque by 1 % between a cold and a warm start at 32 x 32 cells). Its cells scale with the
+      // contact, so the previous pressure fields, copied cell by cell, remain good warm starts
+      // (the solver rescales them to the new load).
+      const bool same = d.rib_grid_ && d.rib_grid_->nx() == rib_cells && dx == d.rib_dx_ && dy == d.rib_dy_;
+      if (!same) {
+        auto grid = std::make_shared<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
+        std::vector<std::shared_ptr<CellContactData>> fields;
+        for (int j = 0; j < Z; ++j) {
+          fields.push_back(std::make_shared<CellContactData>(*grid));
+          if (d.rib_grid_ && d.rib_grid_->nx() == rib_cells && j < int(d.rib_fields_.size()) &&
+              d.rib_fields_[j]->has_solution) {
+            fields[j]->pressure_Pa = d.rib_fields_[j]->pressure_Pa;
+            fields[j]->has_solution = true;
+          }
+        }
+        d.rib_grid_ = grid;
+        d.rib_fields_ = std::move(fields);
         d.rib_dx_ = dx;
         d.rib_dy_ = dy;
       }
