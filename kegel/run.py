@@ -11,6 +11,7 @@ mechanism, the roller loads around the circumference, the cage slip).
 from __future__ import annotations
 
 import csv
+import dataclasses
 import json
 import io
 import math
@@ -28,11 +29,11 @@ from .correlations import hydraulic_torques
 from .io import atomic_write_json, atomic_write_text, provenance
 from .lubricant import lubricant_state
 from .quasi_static import bearing_friction, bearing_model
-from .scene import Scene
+from .scene import Fidelity, Scene
 from .tribology import cage_speed_rad_s, load_friction
 from . import _core
 
-__all__ = ["RunResult", "run_scene"]
+__all__ = ["RunResult", "choose_fidelity", "run_scene"]
 
 CONTACTS = ("outer_raceway", "inner_raceway", "rib")
 CONTACTS_WITH_CAGE = CONTACTS + ("cage",)
@@ -77,6 +78,10 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     t_start = time.perf_counter()
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
+    choice = None
+    if scene.fidelity.tolerance is not None:
+        chosen, choice = choose_fidelity(scene)
+        scene = dataclasses.replace(scene, fidelity=chosen)
     fid = scene.fidelity
     method = fid.slice_model
     rib_cells = fid.rib_cells if fid.rib_model == "cell" else 0
@@ -161,12 +166,55 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                          **({"dynamic": scene.dynamic.as_dict()} if fid.solution == "dynamic" else {}),
                          "rib_load_model": "hertz (load distribution); friction: "
                                            + (f"cell model {rib_cells} x {rib_cells}" if rib_cells else "one ellipse")},
+            **({"fidelity_choice": choice} if choice else {}),
             "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime, "points": points,
         })),
         "csv": str(atomic_write_text(out / "results.csv", _csv(points))),
     }
     files.update(_plots(scene, points, out))
     return RunResult(points=points, files=files, runtime_s=runtime)
+
+
+AUTO_LEVELS = ("fast", "default", "fine")  # cheapest first; fine is the reference
+
+
+def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
+    """``fidelity = "auto"``: the cheapest quasi-static preset whose friction torque at the scene's
+    first and last operating points lies within ``scene.fidelity.tolerance`` of the ``fine``
+    level.
+
+    Each level is solved cold at those points (model built, load distribution, friction), so the
+    choice costs about the runtime of the ``fine`` level at two points. Returns the chosen
+    :class:`kegel.scene.Fidelity` (named ``auto:<preset>``, hydraulic options kept) and a record of
+    the comparison: per level the torques, the largest deviation from ``fine`` and the runtime.
+    """
+    from .scene import FIDELITY_PRESETS
+
+    g, b, m = scene.geometry, scene.bearing, scene.material
+    friction = load_friction()
+    ops = scene.operating_points
+    checks = [ops[0]] if len(ops) == 1 else [ops[0], ops[-1]]
+    rows: dict[str, dict[str, Any]] = {}
+    for level in AUTO_LEVELS:
+        p = FIDELITY_PRESETS[level]
+        t0 = time.perf_counter()
+        torques = []
+        for op in checks:
+            _, fr = bearing_friction(
+                g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
+                axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
+                misalignment_rad=op.misalignment_rad, slices=p["slices"], method=p["slice_model"],
+                rib_cells=p["rib_cells"] if p["rib_model"] == "cell" else 0, cage=p["cage"])
+            torques.append(fr.drive_torque_Nm)
+        rows[level] = {"torques_Nm": torques, "runtime_s": time.perf_counter() - t0}
+    ref = rows["fine"]["torques_Nm"]
+    for r in rows.values():
+        r["deviation_from_fine"] = max(abs(t / tf - 1.0) for t, tf in zip(r["torques_Nm"], ref))
+    tol = scene.fidelity.tolerance
+    chosen = next(level for level in AUTO_LEVELS if rows[level]["deviation_from_fine"] <= tol)
+    fid = dataclasses.replace(scene.fidelity, name=f"auto:{chosen}", **FIDELITY_PRESETS[chosen])
+    record = {"tolerance": tol, "chosen": chosen, "checked_points": [op.index for op in checks], "levels": rows}
+    return fid, record
 
 
 def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dict[str, Any]:

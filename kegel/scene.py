@@ -100,7 +100,7 @@ _ALLOWED: dict[str, set[str]] = {
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
-              "cfd_results"},
+              "cfd_results", "tolerance"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
@@ -118,7 +118,8 @@ class Fidelity:
     ----------
     name
         Preset the options started from (``fast``, ``default``, ``fine``), ``+custom`` appended
-        when a key overrides it.
+        when a key overrides it; ``auto`` until :func:`kegel.run.run_scene` has chosen a preset
+        (then ``auto:<preset>``).
     slices
         Slices per roller/raceway contact.
     slice_model
@@ -142,6 +143,9 @@ class Fidelity:
         With ``hydraulic = "cfd"``: a CFD ``results.json`` or a folder holding them (relative
         paths from the working directory, as ``output.directory``); see
         :func:`kegel.coupling.find_cfd_result`.
+    tolerance
+        With ``fidelity = "auto"``: the largest deviation of the friction torque from the ``fine``
+        level that the chosen preset may have (a fraction; default 0.01).
     """
 
     name: str
@@ -153,6 +157,7 @@ class Fidelity:
     solution: str
     hydraulic: str
     cfd_results: str | None = None
+    tolerance: float | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -473,11 +478,40 @@ def _check_keys(reader: _Reader, raw: dict[str, Any]) -> None:
             raise reader.error(section, None, f"a table [{section}]")
 
 
+AUTO_TOLERANCE = 0.01
+
+
+def _tolerance(reader: _Reader, model: dict[str, Any]) -> float:
+    """``model.tolerance``: a fraction, or a string with a per-cent sign ("1 %")."""
+    v = model.get("tolerance", AUTO_TOLERANCE)
+    x = v
+    if isinstance(v, str) and v.strip().endswith("%"):
+        try:
+            x = float(v.strip()[:-1]) / 100.0
+        except ValueError:
+            x = None
+    if isinstance(x, bool) or not isinstance(x, (int, float)) or not 0.0 < x <= 0.5:
+        raise reader.error("model.tolerance", v, 'a fraction in (0, 0.5] or a per-cent string such as "1 %"')
+    return float(x)
+
+
 def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> Fidelity:
     preset = model.get("fidelity", "default")
-    if preset not in FIDELITY_PRESETS:
-        raise reader.error("model.fidelity", preset, f"one of {', '.join(FIDELITY_PRESETS)}")
-    opts = dict(FIDELITY_PRESETS[preset])
+    if preset != "auto" and preset not in FIDELITY_PRESETS:
+        raise reader.error("model.fidelity", preset, f"one of {', '.join(FIDELITY_PRESETS)} or auto")
+    if "tolerance" in model and preset != "auto":
+        raise reader.error("model.tolerance", model["tolerance"], 'no value unless model.fidelity = "auto"')
+    if preset == "auto":
+        # kegel.run chooses the preset by solving the scene's first and last points at each level
+        for key in ("slices", "slice_model", "rib_model", "rib_cells", "cage"):
+            if key in model:
+                raise reader.error(f"model.{key}", model[key], 'no value with fidelity = "auto" (auto chooses it)')
+        if model.get("solution", "quasi_static") != "quasi_static":
+            raise reader.error("model.solution", model.get("solution"),
+                               '"quasi_static" with fidelity = "auto" (it chooses among the quasi-static levels)')
+    opts = dict(FIDELITY_PRESETS["default" if preset == "auto" else preset])
+    if preset == "auto":
+        opts["tolerance"] = _tolerance(reader, model)
     opts["hydraulic"] = "correlation" if lubrication_mode == "oil_bath" else "none"
     custom = False
     for key in ("slices", "rib_cells"):

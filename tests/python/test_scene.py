@@ -144,3 +144,45 @@ def test_atomic_write_leaves_old_file_on_failure(tmp_path):
         atomic_write_json(target, {"a": float("nan")})  # results must be finite
     assert json.loads(target.read_text()) == {"a": 1}
     assert [p.name for p in tmp_path.iterdir()] == ["r.json"]
+
+
+_AUTO = {"bearing": {"designation": "32216"}, "lubricant": {"name": "FVA3"},
+         "operating": {"axial_load": "6 kN", "speed": ["500 rpm", "4000 rpm"], "temperature": "50 degC"},
+         "lubrication": {"mode": "minimum_quantity"}}
+
+
+@pytest.mark.parametrize("tolerance,chosen", [(0.5, "fast"), ("1 %", "default"), (1e-9, "fine")])
+def test_auto_fidelity_takes_the_cheapest_level_within_the_tolerance(tolerance, chosen, tmp_path):
+    from kegel.run import choose_fidelity, run_scene
+
+    s = kegel.scene.scene_from_dict({**_AUTO, "model": {"fidelity": "auto", "tolerance": tolerance}})
+    fid, rec = choose_fidelity(s)
+    levels = rec["levels"]
+    # the deviations are measured against fine at the first and the last point
+    assert rec["checked_points"] == [0, 1] and levels["fine"]["deviation_from_fine"] == 0.0
+    for name, row in levels.items():
+        dev = max(abs(t / f - 1) for t, f in zip(row["torques_Nm"], levels["fine"]["torques_Nm"]))
+        assert row["deviation_from_fine"] == pytest.approx(dev, rel=1e-12)
+    assert rec["chosen"] == chosen and fid.name == f"auto:{chosen}"
+    assert fid.slices == kegel.scene.FIDELITY_PRESETS[chosen]["slices"]
+    cheaper = kegel.run.AUTO_LEVELS[:kegel.run.AUTO_LEVELS.index(chosen)]
+    assert all(levels[c]["deviation_from_fine"] > rec["tolerance"] for c in cheaper)
+    assert levels[chosen]["deviation_from_fine"] <= rec["tolerance"]
+    # a run records the choice and runs at the chosen level
+    if chosen == "default":
+        res = run_scene(s, tmp_path, progress=False)
+        out = json.loads((tmp_path / "results.json").read_text())
+        assert out["fidelity"]["name"] == "auto:default" and out["fidelity_choice"]["chosen"] == "default"
+        assert res.points[1]["friction_torque_Nm"] == pytest.approx(levels["default"]["torques_Nm"][1], rel=1e-6)
+
+
+@pytest.mark.parametrize("model,key", [
+    ({"fidelity": "auto", "slices": 20}, "model.slices"),
+    ({"fidelity": "auto", "solution": "dynamic"}, "model.solution"),
+    ({"fidelity": "default", "tolerance": 0.01}, "model.tolerance"),
+    ({"fidelity": "auto", "tolerance": 0.0}, "model.tolerance"),
+    ({"fidelity": "auto", "tolerance": "one percent"}, "model.tolerance"),
+])
+def test_auto_fidelity_keys_are_checked(model, key):
+    with pytest.raises(kegel.KegelInputError, match=key.replace(".", r"\.")):
+        kegel.scene.scene_from_dict({**_AUTO, "model": model})
