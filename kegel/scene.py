@@ -32,9 +32,11 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
                                              # above the lowest point of the outer diameter
 
     [model]
-    fidelity = "default"                     # fast | default | fine; the keys below override it
+    fidelity = "default"                     # fast | default | fine; the keys below override it;
+                                             # or auto (with tolerance = "1 %"): kegel chooses
     # slices = 30, slice_model = "alternative_slicing", rib_model = "cell", rib_cells = 32,
-    # cage = true, solution = "quasi_static", hydraulic = "correlation"
+    # cage = true, solution = "quasi_static", hydraulic = "correlation" (or "cfd" with
+    # cfd_results = "results/cfd")
 
     [dynamic]                                # optional, for solution = "dynamic"
     duration = "20 ms"                       # simulated time per operating point
