@@ -56,21 +56,10 @@ nb::dict to_dict(const DynamicOutputs& o) {
   d["cage_speed_rad_s"] = o.cage_speed_rad_s;
   d["drive_torque_Nm"] = o.drive_torque_Nm;
   d["outer_ring_torque_Nm"] = o.outer_ring_torque_Nm;
-  const char* contacts[3] = {"outer_raceway", "inner_raceway", "rib"};
-  const char* mechs[5] = {"ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis"};
-  nb::dict tq, p, lam, phi;
-  for (int k = 0; k < 3; ++k) {
-    tq[contacts[k]] = o.torque_by_contact_Nm[k];
-    lam[contacts[k]] = o.Lambda_min[k];
-    phi[contacts[k]] = o.phi_max[k];
-    nb::dict row;
-    for (int q = 0; q < 5; ++q) row[mechs[q]] = o.power_W[k][q];
-    p[contacts[k]] = row;
-  }
+  nb::dict tq;
+  for (int k = 0; k < 3; ++k) tq[kContactNames[k]] = o.torque_by_contact_Nm[k];
   d["torque_by_contact_Nm"] = tq;
-  d["power_W"] = p;
-  d["Lambda_min"] = lam;
-  d["phi_max"] = phi;
+  put_friction_by_contact(d, o.power_W, o.Lambda_min, o.phi_max);
   d["damping_power_W"] = o.damping_power_W;
   d["cage_power_W"] = o.cage_power_W;
   d["external_power_W"] = o.external_power_W;

@@ -113,23 +113,11 @@ void bind_quasi_static(nb::module_& parent) {
         d["power_dissipated_W"] = f.power_dissipated_W;
         d["cage_power_W"] = f.cage_power_W;
         d["cage_residual_Nm"] = f.cage_residual_Nm;
-        const char* contacts[3] = {"outer_raceway", "inner_raceway", "rib"};
-        const char* mechs[5] = {"ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis"};
-        nb::dict p, lam, phi;
-        for (int k = 0; k < 3; ++k) {
-          nb::dict row;
-          for (int q = 0; q < 5; ++q) row[mechs[q]] = f.power_W[k][q];
-          p[contacts[k]] = row;
-          lam[contacts[k]] = f.Lambda_min[k];
-          phi[contacts[k]] = f.phi_max[k];
-        }
-        d["power_W"] = p;
-        d["Lambda_min"] = lam;
-        d["phi_max"] = phi;
+        put_friction_by_contact(d, f.power_W, f.Lambda_min, f.phi_max);
         return d;
       },
       "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
-      "rib"_a, "rib_cells"_a = 0, "cage"_a = true,
+      "rib"_a, "rib_cells"_a = 0, "cage"_a = CageModel::FreeRollers,
       "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model).");
 }
 
