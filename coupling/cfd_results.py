@@ -18,7 +18,7 @@ from typing import Any
 
 from ..errors import KegelInputError
 
-__all__ = ["find_cfd_result", "cfd_result_files"]
+__all__ = ["find_cfd_result", "cfd_result_files", "read_cfd_results"]
 
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
@@ -40,9 +40,33 @@ def _describe(point: dict[str, Any]) -> str:
             f"{point.get('temperature_K', 0.0) - 273.15:.1f} degC, {lvl}")
 
 
+def read_cfd_results(path: str | Path, *, source: str = "<argument>",
+                     key: str = "model.cfd_results") -> list[tuple[Path, dict[str, Any]]]:
+    """Every ``kegel cfd run`` result at ``path`` (a ``results.json`` or a folder searched
+    recursively), as (file, contents); other programs' ``results.json`` files are skipped.
+
+    Raises
+    ------
+    KegelInputError
+        No file at ``path``, or a file that is not readable JSON.
+    """
+    files = cfd_result_files(path)
+    if not files:
+        raise KegelInputError(source, key, str(path), "a kegel cfd results.json or a folder holding them")
+    out = []
+    for f in files:
+        try:
+            data = json.loads(f.read_text())
+        except (OSError, json.JSONDecodeError) as exc:
+            raise KegelInputError(str(f), "(file)", "", f"a readable CFD results.json ({exc})") from None
+        if isinstance(data.get("point"), dict) and "kinematics" in data and "loss_torque_at_shaft_Nm" in data:
+            out.append((f, data))
+    return out
+
+
 def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad_s: float, temperature_K: float,
-                    oil_level_m: float, flooded: bool, source: str = "<argument>",
-                    key: str = "model.cfd_results") -> tuple[dict[str, Any], Path]:
+                    oil_level_m: float, flooded: bool, source: str = "<argument>", key: str = "model.cfd_results",
+                    results: list[tuple[Path, dict[str, Any]]] | None = None) -> tuple[dict[str, Any], Path]:
     """The CFD result for one operating point, and its file.
 
     Parameters
@@ -56,24 +80,19 @@ def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad
         (the CFD's single-phase case).
     source, key
         Where ``path`` was written, for the error message.
+    results
+        What :func:`read_cfd_results` read from ``path`` already (a sweep reads the files once).
 
     Raises
     ------
     KegelInputError
         No readable result matches; the message lists the points that were found.
     """
-    files = cfd_result_files(path)
-    if not files:
-        raise KegelInputError(source, key, str(path), "a kegel cfd results.json or a folder holding them")
+    if results is None:
+        results = read_cfd_results(path, source=source, key=key)
     found = []
-    for f in files:
-        try:
-            data = json.loads(f.read_text())
-        except (OSError, json.JSONDecodeError) as exc:
-            raise KegelInputError(str(f), "(file)", "", f"a readable CFD results.json ({exc})") from None
-        pt = data.get("point")
-        if not isinstance(pt, dict) or "kinematics" not in data or "loss_torque_at_shaft_Nm" not in data:
-            continue  # another program's results.json
+    for f, data in results:
+        pt = data["point"]
         found.append(_describe(pt))
         level = pt.get("oil_level_m")
         if (pt.get("bearing") == bearing and pt.get("lubricant") == lubricant

@@ -98,15 +98,17 @@ def flow_forces_from_correlation(hydraulic, g: BearingGeometry, *, density_kg_m3
                         fitted_at={"cage_speed_rad_s": cage_speed_rad_s, "roller_set_drag_Nm": abs(hydraulic.cage_Nm)})
 
 
-def flow_forces_from_cfd(result: dict[str, Any] | str | Path, g: BearingGeometry) -> FlowForceLaw:
-    """Fit the flow-force law to a CFD result (``results.json`` of ``kegel cfd run``).
+def flow_forces_from_cfd(result: dict[str, Any] | str | Path, g: BearingGeometry, *,
+                         source: str | None = None) -> FlowForceLaw:
+    """Fit the flow-force law to a CFD result (``results.json`` of ``kegel cfd run``, or its
+    contents with ``source`` naming where they came from).
 
     The rollers' mean force moment about the bearing axis gives the orbit drag, their mean spin
     torque the spin drag, the cage's axial moment the cage drag, each at the run's kinematics.
     (A frozen-rotor CFD run has no roller-to-roller variation of the oil around the sump; the
     means over the rollers stand for every roller.)
     """
-    src = "<dict>"
+    src = source or "<dict>"
     if not isinstance(result, dict):
         src = str(result)
         try:

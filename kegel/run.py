@@ -26,6 +26,7 @@ from typing import Any, Callable
 import numpy as np
 
 from .correlations import hydraulic_torques
+from .dynamics import CONTACTS, MECHANISMS
 from .io import atomic_write_json, atomic_write_text, provenance
 from .lubricant import lubricant_state
 from .quasi_static import bearing_friction, bearing_model
@@ -35,9 +36,7 @@ from . import _core
 
 __all__ = ["RunResult", "choose_fidelity", "run_scene"]
 
-CONTACTS = ("outer_raceway", "inner_raceway", "rib")
 CONTACTS_WITH_CAGE = CONTACTS + ("cage",)
-MECHANISMS = ("ehl_sliding", "solid_sliding", "ehl_rolling", "solid_rolling", "hysteresis")
 
 
 @dataclass
@@ -88,11 +87,12 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     friction = load_friction()
     model = bearing_model(g, b, m, slices=fid.slices, method=method)
     data = _core.quasi_static.BearingData(model)
+    cfd_runs = _read_cfd_runs(scene)
     bar = _Progress(len(scene.operating_points), progress)
     points: list[dict[str, Any]] = []
     for i, op in enumerate(scene.operating_points):
         if fid.solution == "dynamic":
-            point = _dynamic_point(scene, op, friction, out, progress)
+            point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
             points.append(point)
             if on_point:
                 on_point(point)
@@ -113,7 +113,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         hyd_out = hyd.as_dict() if hyd else None
         if fid.hydraulic == "cfd":
             # the CFD loss torque of this point (hydraulic power / shaft speed), as computed
-            cfd, cfd_file = _cfd_result(scene, op)
+            cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
             hyd_torque = cfd["loss_torque_at_shaft_Nm"]
             hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
                        "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
@@ -217,7 +217,8 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     return fid, record
 
 
-def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dict[str, Any]:
+def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
+                   cfd_runs: list[tuple[Path, dict[str, Any]]] | None = None) -> dict[str, Any]:
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
     checkpoint after an interrupt)."""
@@ -245,8 +246,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
     if fid.hydraulic == "cfd":
         # the CFD result of this point: rollers and cage through the fitted force law, the oil's
         # torque on the inner ring and the shaft (turning with the prescribed speed) on top
-        cfd, cfd_file = _cfd_result(scene, op)
-        law = flow_forces_from_cfd(cfd_file, g)  # the law names the file it came from
+        cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
+        law = flow_forces_from_cfd(cfd, g, source=str(cfd_file))
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
@@ -324,8 +325,17 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool) -> dic
     }
 
 
-def _cfd_result(scene: Scene, op) -> tuple[dict[str, Any], Path]:
-    """The ``kegel cfd run`` result of an operating point (``[model] cfd_results``)."""
+def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
+    """The CFD results of ``[model] cfd_results``, read once per run (None without them)."""
+    from .coupling import read_cfd_results
+
+    if scene.fidelity.hydraulic != "cfd":
+        return None
+    return read_cfd_results(scene.fidelity.cfd_results, source=scene.source, key="model.cfd_results")
+
+
+def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tuple[dict[str, Any], Path]:
+    """The ``kegel cfd run`` result of an operating point, among ``runs`` (:func:`_read_cfd_runs`)."""
     from .coupling import find_cfd_result
 
     lub = scene.lubrication
@@ -333,7 +343,7 @@ def _cfd_result(scene: Scene, op) -> tuple[dict[str, Any], Path]:
                            lubricant=scene.lubricant.name, speed_rad_s=op.speed_rad_s,
                            temperature_K=op.temperature_K, oil_level_m=lub.oil_level_m,
                            flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m,
-                           source=scene.source, key="model.cfd_results")
+                           source=scene.source, key="model.cfd_results", results=runs)
 
 
 def _csv(points: list[dict[str, Any]]) -> str:

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import kegel
+from conftest import scene_text
 from kegel.correlations import hydraulic_torques
 from kegel.coupling import flow_forces_from_cfd, flow_forces_from_correlation
 from kegel.coupling.flow_forces import orbit_radius_m
@@ -101,31 +102,17 @@ def test_the_cfd_law_reproduces_the_cfd_forces_at_its_kinematics(b32216, tmp_pat
         flow_forces_from_cfd(tmp_path / "missing.json", g)
 
 
-_BATH_SCENE = """
-[bearing]
-designation = "32216"
-[lubricant]
-name = "FVA3"
-[operating]
-axial_load = "6 kN"
-speed = {speed}
-temperature = "50 degC"
-[lubrication]
-mode = "oil_bath"
-oil_level = "flooded"
-[model]
-fidelity = "fast"
-{model}
-[output]
-directory = "out"
-"""
+def _bath_scene(speed: str, model: str) -> str:
+    return scene_text(speed=speed, lubrication='mode = "oil_bath"\noil_level = "flooded"', model=model)
+
+
 _DYNAMIC = 'solution = "dynamic"\n[dynamic]\nduration = "2 ms"\noutput_interval = "0.2 ms"'
 
 
 def test_an_oil_bath_scene_runs_dynamically_with_the_oil_on_the_rollers(tmp_path):
     from conftest import run_kegel
 
-    scene = _BATH_SCENE.format(speed='"2000 rpm"', model=_DYNAMIC)
+    scene = _bath_scene('"2000 rpm"', _DYNAMIC)
     (tmp_path / "bath.toml").write_text(scene)
     res = run_kegel("run", "bath.toml", cwd=tmp_path, timeout=300)
     assert res.returncode == 0, res.stderr
@@ -173,7 +160,7 @@ def test_a_scene_takes_each_points_cfd_result(b32216, tmp_path):
     _cfd_result_file(tmp_path / "cfd" / "a" / "results.json", g, 1000.0)
     _cfd_result_file(tmp_path / "cfd" / "b" / "results.json", g, 2000.0)
     _cfd_result_file(tmp_path / "cfd" / "c" / "results.json", g, 2000.0, flooded=False)  # another oil level
-    (tmp_path / "s.toml").write_text(_BATH_SCENE.format(speed='["1000 rpm", "2000 rpm"]', model=_CFD))
+    (tmp_path / "s.toml").write_text(_bath_scene('["1000 rpm", "2000 rpm"]', _CFD))
     res = run_kegel("run", "s.toml", cwd=tmp_path, timeout=300)
     assert res.returncode == 0, res.stderr
     pts = json.loads((tmp_path / "out" / "results.json").read_text())["points"]
@@ -182,7 +169,7 @@ def test_a_scene_takes_each_points_cfd_result(b32216, tmp_path):
         assert p["total_torque_Nm"] == pytest.approx(p["friction_torque_Nm"] + 40e-3)
         assert p["hydraulic"]["source"] == "cfd" and p["hydraulic"]["file"].endswith(f"{sub}/results.json")
     # a point without its CFD result: the error names the key and lists what there is
-    (tmp_path / "t.toml").write_text(_BATH_SCENE.format(speed='"3000 rpm"', model=_CFD))
+    (tmp_path / "t.toml").write_text(_bath_scene('"3000 rpm"', _CFD))
     res = run_kegel("run", "t.toml", cwd=tmp_path, timeout=300)
     assert res.returncode != 0
     assert "model.cfd_results" in res.stderr and "3000 rpm" in res.stderr and "1000 rpm" in res.stderr
@@ -205,12 +192,13 @@ def test_a_dynamic_scene_puts_the_cfd_forces_on_the_bodies(b32216, tmp_path):
 
     g = b32216[0]
     _cfd_result_file(tmp_path / "cfd" / "results.json", g, 2000.0)
-    (tmp_path / "d.toml").write_text(_BATH_SCENE.format(speed='"2000 rpm"', model=_CFD + "\n" + _DYNAMIC))
+    (tmp_path / "d.toml").write_text(_bath_scene('"2000 rpm"', _CFD + "\n" + _DYNAMIC))
     res = run_kegel("run", "d.toml", cwd=tmp_path, timeout=300)
     assert res.returncode == 0, res.stderr
     p = json.loads((tmp_path / "out" / "results.json").read_text())["points"][0]
     h = p["hydraulic"]
     assert h["source"] == "cfd" and h["inner_ring_and_shaft_Nm"] == pytest.approx(25e-3)
+    assert h["flow_force_law"]["source"].endswith("cfd/results.json")  # the law names its file
     # rollers and cage through the force law: at the CFD's kinematics their power is
     # Z (1 mN m) w_c + Z (0.2 mN m) |spin| + (1 mN m) w_c, about the CFD's 15 mN m loss share
     assert h["roller_drag_on_the_bodies_Nm"] > 0
