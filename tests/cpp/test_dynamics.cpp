@@ -65,15 +65,8 @@ struct Fixture {
   kegel::Lubricant lub{kegel::test::fva3()};
   kegel::ContactLubricantState state = kegel::make_contact_lubricant_state(lub, 323.15);
   kegel::FrictionParameters fp{[] {
-    kegel::FrictionParameters::Values v;
+    kegel::FrictionParameters::Values v = kegel::test::friction_values();
     v.tau_L0_Pa = 2e6;
-    v.gamma_L = 0.06;
-    v.mu_s = 0.1;
-    v.mu_d = 0.1;
-    v.v_s_m_s = 1e-3;
-    v.v_d_m_s = 2e-3;
-    v.c_r = 5e-6;
-    v.a_v = 0.007;
     return v;
   }()};
   kegel::SurfacePair race{0.16e-6, 2.32, 0.97, 2.3e11}, rib{0.24e-6, 1.9, 0.99, 2.3e11};

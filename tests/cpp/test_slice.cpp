@@ -11,18 +11,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 kegel::FrictionParameters::Values params() {
-  kegel::FrictionParameters::Values v;
-  v.tau_L0_Pa = 0.0;
-  v.gamma_L = 0.06;
-  v.mu_s = 0.1;
-  v.mu_d = 0.1;
-  v.v_s_m_s = 1e-3;
-  v.v_d_m_s = 2e-3;
-  v.c_r = 5e-6;
-  v.e_r = 1.0;
-  v.a_v = 0.007;
+  kegel::FrictionParameters::Values v = kegel::test::friction_values();  // tau_L0 0, e_r 1, delta_max 1 um
   v.d_max_Ns_m = 100.0;
-  v.delta_max_m = 1e-6;
   return v;
 }
 

@@ -28,6 +28,29 @@ def kegel_json():
     return call
 
 
+def scene_text(*, speed: str = '"2000 rpm"', lubrication: str = 'mode = "minimum_quantity"',
+               model: str = "") -> str:
+    """A 32216 scene at 6 kN and 50 degC, fidelity fast, output to "out": the speed (TOML value),
+    the [lubrication] lines and further [model] lines (tables such as [dynamic] may follow them)."""
+    return f"""
+[bearing]
+designation = "32216"
+[lubricant]
+name = "FVA3"
+[operating]
+axial_load = "6 kN"
+speed = {speed}
+temperature = "50 degC"
+[lubrication]
+{lubrication}
+[model]
+fidelity = "fast"
+{model}
+[output]
+directory = "out"
+"""
+
+
 @pytest.fixture
 def write_scene(tmp_path):
     """Write a scene file from the text of a valid base scene with replacements."""

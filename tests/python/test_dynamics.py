@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import kegel
+from conftest import scene_text
 from kegel.dynamics import D, SimulationDiverged, dynamic_model, simulate
 from kegel.quasi_static import bearing_friction
 from kegel.tribology import load_friction
@@ -312,27 +313,8 @@ def test_bad_inputs_raise_clear_errors(setup):
         D.DynamicModel(qs, D.DynamicValues(), fr.core(lub), race, race, state)
 
 
-DYNAMIC_SCENE = """
-[bearing]
-designation = "32216"
-[lubricant]
-name = "FVA3"
-[operating]
-axial_load = "6 kN"
-speed = "2000 rpm"
-temperature = "50 degC"
-[lubrication]
-mode = "minimum_quantity"
-[model]
-fidelity = "fast"
-solution = "dynamic"
-cage = true
-[dynamic]
-duration = "2 ms"
-output_interval = "0.2 ms"
-[output]
-directory = "out"
-"""
+DYNAMIC_SCENE = scene_text(model='solution = "dynamic"\ncage = true\n[dynamic]\nduration = "2 ms"\n'
+                                 'output_interval = "0.2 ms"')
 
 
 def test_a_scene_runs_dynamically_and_writes_series_vtk_and_plots(tmp_path):
