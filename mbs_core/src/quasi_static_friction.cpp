@@ -345,33 +345,35 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   const double wc0 = out.cage_speed_pure_rolling_rad_s, wR0 = out.roller_spin_pure_rolling_rad_s[0];
   out.roller_spin_rad_s.assign(Z, wR0);
   int status = 0;
+  // roller j's spin that balances its spin moments when it orbits at w_c (unloaded: pure rolling)
+  auto spin_at = [&](int j, double w_c) {
+    const Roller& r = rollers[j];
+    const double w_pure = wR0 * w_c / wc0;
+    if (r.points.empty()) return w_pure;
+    auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, cage).spin_moment; };
+    const double tol = 1e-13 * std::abs(w_pure);
+    double root = w_pure;
+    // warm start from the previous slip of this roller, secant first, Brent as the fallback
+    const double guess = w_pure * d.spin_ratio_[j];
+    if (!secant(S, guess, guess * (1.0 + 1e-7), tol, root)) {
+      double lo = w_pure * 0.9, hi = w_pure * 1.1;
+      double flo = S(lo), fhi = S(hi);
+      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+        lo = w_pure + (lo - w_pure) * 2.0;
+        hi = w_pure + (hi - w_pure) * 2.0;
+        flo = S(lo);
+        fhi = S(hi);
+      }
+      if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
+    }
+    return root;
+  };
   auto spin_for_cage = [&](double w_c, std::vector<double>& spins) {
     double tangential = 0.0;
     for (int j = 0; j < Zc; ++j) {
-      const Roller& r = rollers[j];
-      const double w_pure = wR0 * w_c / wc0;
-      if (r.points.empty()) {
-        spins[j] = w_pure;
-        continue;
-      }
-      auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, cage).spin_moment; };
-      const double tol = 1e-13 * std::abs(w_pure);
-      double root = w_pure;
-      // warm start from the previous slip of this roller, secant first, Brent as the fallback
-      const double guess = w_pure * d.spin_ratio_[j];
-      if (!secant(S, guess, guess * (1.0 + 1e-7), tol, root)) {
-        double lo = w_pure * 0.9, hi = w_pure * 1.1;
-        double flo = S(lo), fhi = S(hi);
-        for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-          lo = w_pure + (lo - w_pure) * 2.0;
-          hi = w_pure + (hi - w_pure) * 2.0;
-          flo = S(lo);
-          fhi = S(hi);
-        }
-        if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
-      }
-      spins[j] = root;
-      tangential += weight * eval(r, root, w_c, w_i, lub, fp, race, ribp, false, cage).axis_moment;
+      spins[j] = spin_at(j, w_c);
+      if (!rollers[j].points.empty())
+        tangential += weight * eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, false, cage).axis_moment;
     }
     for (int j = Zc; j < Z; ++j) spins[j] = spins[0];
     return tangential;
@@ -527,17 +529,9 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       w_c = n_free / inv;
       for (int j = 0; j < Zc; ++j) {
         if (free[j]) continue;
+        // unloaded and locked rollers: with the cage, spinning in balance at its new speed
         orbit[j] = w_c;
-        const Roller& r = rollers[j];
-        if (r.points.empty()) {
-          spins[j] = wR0 * w_c / wc0;
-          continue;
-        }
-        // a locked roller: its spin balance at the new cage speed (secant from the last spin)
-        auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, false).spin_moment; };
-        double root = spins[j];
-        if (!secant(S, spins[j], spins[j] * (1.0 + 1e-7), 1e-13 * std::abs(wR0), root)) status = 1;
-        spins[j] = root;
+        spins[j] = spin_at(j, w_c);
       }
       for (int j = Zc; j < Z; ++j) {
         spins[j] = spins[0];
