@@ -83,7 +83,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         scene = dataclasses.replace(scene, fidelity=chosen)
     fid = scene.fidelity
     method = fid.slice_model
-    rib_cells = fid.rib_cells if fid.rib_model == "cell" else 0
+    rib_cells = _rib_cells(fid)
     friction = load_friction()
     model = bearing_model(g, b, m, slices=fid.slices, method=method)
     data = _core.quasi_static.BearingData(model)
@@ -98,11 +98,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 on_point(point)
             bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
             continue
-        dist, fr = bearing_friction(
-            g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
-            axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
-            misalignment_rad=op.misalignment_rad, rib_cells=rib_cells, cage=fid.cage, model=model, data=data,
-        )
+        dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
         state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
         hyd = None
         if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
@@ -178,6 +174,21 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
 AUTO_LEVELS = ("fast", "default", "fine")  # cheapest first; fine is the reference
 
 
+def _rib_cells(fid: "Fidelity") -> int:
+    """Cells per side of the rib's cell model, 0 for the closed-form ellipse."""
+    return fid.rib_cells if fid.rib_model == "cell" else 0
+
+
+def _quasi_static_point(scene: Scene, fid: "Fidelity", op, friction, *, model=None, data=None):
+    """Load distribution and friction of one operating point at the fidelity ``fid`` (a new
+    model unless ``model`` and ``data`` are passed to warm-start a sweep)."""
+    return bearing_friction(
+        scene.geometry, scene.bearing, scene.material, scene.lubricant, friction, temperature_K=op.temperature_K,
+        inner_speed_rad_s=op.speed_rad_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
+        radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, slices=fid.slices, method=fid.slice_model,
+        rib_cells=_rib_cells(fid), cage=fid.cage, model=model, data=data)
+
+
 def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     """``fidelity = "auto"``: the cheapest quasi-static preset whose friction torque at the scene's
     first and last operating points lies within ``scene.fidelity.tolerance`` of the ``fine``
@@ -190,22 +201,14 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     """
     from .scene import FIDELITY_PRESETS
 
-    g, b, m = scene.geometry, scene.bearing, scene.material
     friction = load_friction()
     ops = scene.operating_points
     checks = [ops[0]] if len(ops) == 1 else [ops[0], ops[-1]]
     rows: dict[str, dict[str, Any]] = {}
     for level in AUTO_LEVELS:
-        p = FIDELITY_PRESETS[level]
+        fid = dataclasses.replace(scene.fidelity, **FIDELITY_PRESETS[level])
         t0 = time.perf_counter()
-        torques = []
-        for op in checks:
-            _, fr = bearing_friction(
-                g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, inner_speed_rad_s=op.speed_rad_s,
-                axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m, radial_N=op.radial_load_N,
-                misalignment_rad=op.misalignment_rad, slices=p["slices"], method=p["slice_model"],
-                rib_cells=p["rib_cells"] if p["rib_model"] == "cell" else 0, cage=p["cage"])
-            torques.append(fr.drive_torque_Nm)
+        torques = [_quasi_static_point(scene, fid, op, friction)[1].drive_torque_Nm for op in checks]
         rows[level] = {"torques_Nm": torques, "runtime_s": time.perf_counter() - t0}
     ref = rows["fine"]["torques_Nm"]
     for r in rows.values():
