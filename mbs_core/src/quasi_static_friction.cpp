@@ -173,6 +173,22 @@ bool secant(F f, double x0, double x1, double tol, double& root) {
   return false;
 }
 
+// A root of f near x0: the secant from the warm start guess, else Brent on the bracket
+// x0 (1 -+ rel), widened about x0 by factors of 2 (at most 30 times) until f changes sign.
+template <class F>
+bool root_near(F f, double guess, double x0, double rel, double tol, double& root) {
+  if (secant(f, guess, guess * (1.0 + 1e-7), tol, root)) return true;
+  double lo = x0 * (1.0 - rel), hi = x0 * (1.0 + rel);
+  double flo = f(lo), fhi = f(hi);
+  for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
+    lo = x0 + (lo - x0) * 2.0;
+    hi = x0 + (hi - x0) * 2.0;
+    flo = f(lo);
+    fhi = f(hi);
+  }
+  return brent(f, lo, hi, flo, fhi, tol, root);
+}
+
 }  // namespace
 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
@@ -353,19 +369,8 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, cage).spin_moment; };
     const double tol = 1e-13 * std::abs(w_pure);
     double root = w_pure;
-    // warm start from the previous slip of this roller, secant first, Brent as the fallback
-    const double guess = w_pure * d.spin_ratio_[j];
-    if (!secant(S, guess, guess * (1.0 + 1e-7), tol, root)) {
-      double lo = w_pure * 0.9, hi = w_pure * 1.1;
-      double flo = S(lo), fhi = S(hi);
-      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-        lo = w_pure + (lo - w_pure) * 2.0;
-        hi = w_pure + (hi - w_pure) * 2.0;
-        flo = S(lo);
-        fhi = S(hi);
-      }
-      if (!brent(S, lo, hi, flo, fhi, tol, root)) status = 1;
-    }
+    // warm start from the previous slip of this roller
+    if (!root_near(S, w_pure * d.spin_ratio_[j], w_pure, 0.1, tol, root)) status = 1;
     return root;
   };
   auto spin_for_cage = [&](double w_c, std::vector<double>& spins) {
@@ -462,18 +467,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     // fallback: nested scalar root finding (secant, then Brent)
     auto C = [&](double wc) { return spin_for_cage(wc, spins); };
     w_c = wc0;
-    const double tol_c = 1e-13 * std::abs(wc0);
-    const double guess = wc0 * d.cage_ratio_;
-    if (!secant(C, guess, guess * (1.0 + 1e-7), tol_c, w_c)) {
-      double lo = wc0 * 0.98, hi = wc0 * 1.02, flo = C(lo), fhi = C(hi);
-      for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-        lo = wc0 + (lo - wc0) * 2.0;
-        hi = wc0 + (hi - wc0) * 2.0;
-        flo = C(lo);
-        fhi = C(hi);
-      }
-      if (!brent(C, lo, hi, flo, fhi, tol_c, w_c)) status = 1;
-    }
+    if (!root_near(C, wc0 * d.cage_ratio_, wc0, 0.02, 1e-13 * std::abs(wc0), w_c)) status = 1;
     cage_residual = spin_for_cage(w_c, spins);
   }
   // FreeRollers: each loaded roller's own orbital speed and spin (two balances, 2 x 2 Newton
