@@ -20,13 +20,6 @@ using namespace nb::literals;
 namespace kegel::python {
 namespace {
 
-void check_size(const char* what, size_t got, size_t expected) {
-  if (got != expected) {
-    throw std::invalid_argument(std::string(what) + ": " + std::to_string(got) + " values: expected " +
-                                std::to_string(expected));
-  }
-}
-
 void check_finite(const char* what, const std::vector<double>& v) {
   for (size_t i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))

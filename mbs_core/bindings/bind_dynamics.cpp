@@ -202,7 +202,7 @@ void bind_dynamics(nb::module_& parent) {
       "rhs",
       [](std::shared_ptr<DynamicModel> model, const RingDrive& drive, double t, const Eigen::VectorXd& y,
          std::vector<std::shared_ptr<ForceElement>> elements) {
-        if (y.size() != model->state_size()) throw std::invalid_argument("rhs: y has the wrong size");
+        check_size("rhs: y", size_t(y.size()), size_t(model->state_size()));
         DynamicData data(*model);
         for (auto& e : elements) data.elements.push_back(e.get());
         Eigen::VectorXd f(y.size());
@@ -216,7 +216,7 @@ void bind_dynamics(nb::module_& parent) {
       "jacobian",
       [](std::shared_ptr<DynamicModel> model, const RingDrive& drive, double t, const Eigen::VectorXd& y) {
         const int N = model->state_size();
-        if (y.size() != N) throw std::invalid_argument("jacobian: y has the wrong size");
+        check_size("jacobian: y", size_t(y.size()), size_t(N));
         DynamicData data(*model);
         Eigen::VectorXd f(N), work(2 * N);
         if (dynamic_rhs(*model, data, drive, t, y.data(), f.data()) != 0)

@@ -3,6 +3,10 @@
 
 #include <nanobind/nanobind.h>
 
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
 namespace kegel::python {
 void bind_lubricant(nanobind::module_& m);
 void bind_material(nanobind::module_& m);
@@ -10,6 +14,14 @@ void bind_tribology(nanobind::module_& m);
 void bind_contact(nanobind::module_& m);
 void bind_quasi_static(nanobind::module_& m);
 void bind_dynamics(nanobind::module_& m);
+
+/// A vector argument of the wrong length: "<what>: <got> values: expected <expected>".
+inline void check_size(const char* what, std::size_t got, std::size_t expected) {
+  if (got != expected) {
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(got) + " values: expected " +
+                                std::to_string(expected));
+  }
+}
 
 /// Contact and mechanism names of the friction outputs (BearingFriction's order).
 inline constexpr const char* kContactNames[3] = {"outer_raceway", "inner_raceway", "rib"};

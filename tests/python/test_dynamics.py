@@ -464,3 +464,15 @@ def test_under_combined_load_the_rollers_do_not_touch_the_cage(setup):
     assert r.series["roller_cage_N"].max() == 0.0
     assert r.steady["outer_ring_torque_Nm"] == pytest.approx(free.outer_ring_torque_Nm, rel=0.02)
     assert with_pockets.outer_ring_torque_Nm > 1.1 * r.steady["outer_ring_torque_Nm"]
+
+
+def test_a_state_of_the_wrong_length_names_both_lengths(setup):
+    g, b, m, lub, fr = setup
+    model, _ = dynamic_model(g, b, m, lub, fr, temperature_K=323.15, slices=8)
+    d = D.RingDrive()
+    d.time_s, d.speed_rad_s, d.axial_N = [0.0], [0.0], 0.0
+    n = model.state_size
+    with pytest.raises(ValueError, match=f"rhs: y: 5 values: expected {n}"):
+        D.rhs(model, d, 0.0, np.zeros(5), [])
+    with pytest.raises(ValueError, match=f"jacobian: y: 5 values: expected {n}"):
+        D.jacobian(model, d, 0.0, np.zeros(5))
