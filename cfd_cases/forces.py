@@ -1,8 +1,8 @@
 """Reading the ``forces`` function object's output (force.dat, moment.dat) of OpenFOAM v1912.
 
 Each file has lines ``time (total) (pressure) (viscous)`` with three components each. Restarted
-runs write a new time folder; the series are concatenated in time order, later folders winning
-where times overlap.
+runs write a new time folder named by their start time; the series are concatenated in time order,
+and a later folder replaces everything an earlier run wrote from its start time on.
 """
 
 from __future__ import annotations
@@ -60,15 +60,20 @@ def _series(case: Path, name: str, file: str) -> np.ndarray:
     root = case / "postProcessing" / name
     if not root.is_dir():
         raise FoamError(f"{root}: no output of function object '{name}' (did the solver run?)")
-    parts = []
+    parts: list[np.ndarray] = []
     for d in sorted((p for p in root.iterdir() if p.is_dir()), key=lambda p: float(p.name)):
         f = d / file
         if f.is_file():
+            # a restart from time d replaces what earlier runs wrote from d on (an interrupted
+            # run may have gone past its last written time; its time steps differ from the new ones)
+            start = float(d.name)
+            parts = [p[p[:, 0] <= start] if p[0, 0] < start else p[:0] for p in parts if len(p)]
             parts.append(_read_dat(f))
+    parts = [p for p in parts if len(p)]
     if not parts:
         raise FoamError(f"{root}: no {file} in any time folder")
     arr = np.vstack(parts)
-    # keep the last occurrence of each time (restarts overwrite)
+    # keep the last occurrence of each time (a restart repeats its start time)
     _, idx = np.unique(arr[::-1, 0], return_index=True)
     keep = np.sort(len(arr) - 1 - idx)
     return arr[keep]
