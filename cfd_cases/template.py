@@ -19,7 +19,7 @@ from PyFoam.Basics.TemplateFile import TemplateRenderError
 
 from .foam import FoamError
 
-__all__ = ["TEMPLATE_ROOT", "render_case", "foam_vector"]
+__all__ = ["TEMPLATE_ROOT", "render_case", "render_file", "foam_vector"]
 
 #: Folder of kegel's case templates.
 TEMPLATE_ROOT = Path(__file__).resolve().parent / "templates"
@@ -30,6 +30,29 @@ def foam_vector(v: Sequence[float]) -> str:
     if len(v) != 3:
         raise ValueError(f"expected a 3-vector, got {v!r}")
     return "(" + " ".join(f"{float(c):.17g}" for c in v) + ")"
+
+
+def render_file(template_file: str | Path, dest: str | Path, params: Mapping[str, Any]) -> Path:
+    """Render one ``*.template`` file (a path, or one relative to :data:`TEMPLATE_ROOT`) to ``dest``.
+
+    Raises
+    ------
+    FoamError
+        When the template names a parameter that is not given (the message names the file).
+    """
+    path = Path(template_file)
+    if not path.is_file():
+        path = TEMPLATE_ROOT / path
+    if not path.is_file():
+        raise FoamError(f"template file '{template_file}' not found (looked in {TEMPLATE_ROOT})")
+    values = {"vec": foam_vector, **params}
+    try:
+        text = TemplateFile(content=path.read_text(), expressionDelimiter="|-").getString(values)
+    except (TemplateRenderError, NameError, KeyError) as exc:
+        raise FoamError(f"{path}: {exc}") from exc
+    dest = Path(dest)
+    dest.write_text(text)
+    return dest
 
 
 def render_case(
@@ -67,7 +90,6 @@ def render_case(
         raise FoamError(f"case folder {case_dir} exists (pass overwrite=True to replace it)")
     case_dir.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{case_dir.name}.", dir=case_dir.parent))
-    values = {"vec": foam_vector, **params}
     try:
         for path in sorted(src.rglob("*")):
             rel = path.relative_to(src)
@@ -76,11 +98,7 @@ def render_case(
                 continue
             (tmp / rel).parent.mkdir(parents=True, exist_ok=True)
             if path.suffix == ".template":
-                try:
-                    text = TemplateFile(content=path.read_text(), expressionDelimiter="|-").getString(values)
-                except (TemplateRenderError, NameError, KeyError) as exc:
-                    raise FoamError(f"{path}: {exc}") from exc
-                (tmp / rel.with_suffix("")).write_text(text)
+                render_file(path, tmp / rel.with_suffix(""), params)
             else:
                 shutil.copy2(path, tmp / rel)
         if case_dir.exists():

@@ -25,7 +25,7 @@ import numpy as np
 from .foam import run_solver
 from .forces import read_forces
 from .mesh import check_mesh, gmsh_to_foam, write_msh22
-from .template import render_case
+from .template import render_case, render_file
 
 __all__ = ["CouetteResult", "couette_torque_analytic", "taylor_couette", "RotatingTankResult",
            "rotating_tank_surface", "rotating_tank"]
@@ -211,20 +211,30 @@ def rotating_tank(
     n_layers: int = 40,
     end_time_s: float = 1.5,
     n_procs: int = 2,
+    max_courant: float | None = None,
+    max_interface_courant: float | None = None,
     work_dir: str | Path | None = None,
 ) -> RotatingTankResult:
     """Oil in a closed tank turning at ``omega`` about the vertical axis (rotating walls,
     absolute frame), starting in solid-body rotation with a flat surface. After the surface
     settles it must be the paraboloid of :func:`rotating_tank_surface`, and the oil volume
-    must be unchanged. The viscous oil (nu 5e-3 m2/s) damps the sloshing within the run."""
+    must be unchanged. The viscous oil (nu 5e-3 m2/s) damps the sloshing within the run.
+
+    The solver settings are the bearing oil bath's (its ``fvSolution`` template and, unless
+    given, its Courant limits from :class:`~kegel.cfd_cases.run.CfdPoint`), so this checks them."""
     from .foam import read_field, run_utility, time_dirs, write_field_values
+    from .run import CfdPoint
 
     base = Path(work_dir) if work_dir is not None else Path(tempfile.mkdtemp(prefix="kegel-tank-"))
-    case = render_case("rotating_tank", base / "rotating_tank", {
+    params = {
         "end_time": end_time_s, "fill_height_m": fill_height_m, "omega_rad_s": omega_rad_s,
         "oil_nu_m2_s": oil_nu_m2_s, "oil_density_kg_m3": oil_density_kg_m3,
         "p_ref_point": (0.0, 0.0, 0.97 * height_m),
-    }, overwrite=True)
+        "max_co": CfdPoint.max_courant if max_courant is None else max_courant,
+        "max_alpha_co": CfdPoint.max_interface_courant if max_interface_courant is None else max_interface_courant,
+    }
+    case = render_case("rotating_tank", base / "rotating_tank", params, overwrite=True)
+    render_file("bearing_oil_bath/system/fvSolution.template", case / "system" / "fvSolution", params)
     _tank_mesh(case / "tank.msh", radius_m, height_m, n_radial, n_layers)
     gmsh_to_foam(case, case / "tank.msh", {"walls": "wall"})
     quality = check_mesh(case)
