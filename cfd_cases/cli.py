@@ -46,9 +46,24 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         wall = parse_quantity(args.max_wall_time, "time", source=src, key="--max-wall-time")
         if wall <= 0:
             raise KegelInputError(src, "--max-wall-time", args.max_wall_time, "a positive time")
+    extra: dict[str, Any] = {}
+    for key, name in (("--max-courant", "max_courant"), ("--max-interface-courant", "max_interface_courant")):
+        co = getattr(args, name, None)
+        if co is None:
+            continue
+        if not (math.isfinite(co) and co > 0.0):
+            raise KegelInputError(src, key, co, "a positive Courant number")
+        extra[name] = co
+    init = getattr(args, "initial_from", None)
+    if init:
+        if level is None:
+            raise KegelInputError(src, "--initial-from", init, "an oil-bath point (a flooded run starts from rest)")
+        if not (Path(init) / "kegel-case.json").is_file():
+            raise KegelInputError(src, "--initial-from", init, "a kegel CFD case folder (with kegel-case.json)")
+        extra["initial_from"] = str(Path(init).resolve())
     return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
                     mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
-                    max_iterations=args.max_iterations, max_wall_time_s=wall)
+                    max_iterations=args.max_iterations, max_wall_time_s=wall, **extra)
 
 
 def _case_name(point, level_text: str) -> str:
@@ -229,6 +244,13 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
         sp.add_argument("--end-time", help='oil bath: simulated time limit (default 20 shaft revolutions)')
         sp.add_argument("--max-iterations", type=int, default=2000, help="flooded: SIMPLE iteration limit")
+        sp.add_argument("--max-courant", type=float,
+                        help="oil bath: time-step limit as a Courant number in the oil-filled gaps (default 5)")
+        sp.add_argument("--max-interface-courant", type=float,
+                        help="oil bath: time-step limit as a Courant number at the free surface (default 1)")
+        sp.add_argument("--initial-from",
+                        help="oil bath: start from the last state of a run of the same point on another mesh "
+                             "(case folder), e.g. the tiny run before a small one")
         sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")

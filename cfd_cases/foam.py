@@ -546,8 +546,9 @@ def read_boundary_geometry(case: str | Path) -> dict[str, tuple[np.ndarray, np.n
 
 
 def write_field_values(path: str | Path, values: np.ndarray) -> None:
-    """Replace the uniform internal field of an ASCII field file by ``values``: shape (n,) for a
-    scalar field, (n, 3) for a vector field."""
+    """Replace the internal field (uniform or a non-uniform list) of an ASCII field file by
+    ``values``: shape (n,) for a scalar field, (n, 3) for a vector field. The boundary field is
+    kept as it is."""
     path = Path(path)
     text = path.read_text()
     v = np.asarray(values, dtype=float)
@@ -558,9 +559,10 @@ def write_field_values(path: str | Path, values: np.ndarray) -> None:
         body = "\n".join(f"({x:.12g} {y:.12g} {z:.12g})" for x, y, z in v)
         kind = "vector"
     new = f"internalField   nonuniform List<{kind}> {len(v)}\n(\n{body}\n)\n;"
-    text, n = re.subn(r"internalField\s+uniform\s+[^;]+;", lambda m: new, text, count=1)
+    text, n = re.subn(r"internalField\s+(uniform\s+[^;]+;|nonuniform\s+List<\w+>\s*\d+\s*\(.*?\)\s*;)",
+                      lambda m: new, text, count=1, flags=re.S)
     if n != 1:
-        raise FoamError(f"{path}: expected a uniform internalField to replace")
+        raise FoamError(f"{path}: expected an internalField to replace")
     tmp = path.with_suffix(".tmp")
     tmp.write_text(text)
     tmp.replace(path)

@@ -17,7 +17,17 @@ Modelling choices (and what they cost):
 - Line contacts are opened to a gap (kegel.cfd_cases.geometry).
 
 Flooded: steady single-phase ``simpleFoam``. Oil bath: transient ``interFoam`` (oil/air, gravity
-``-y``), run until the torque is statistically steady.
+``-y``), run until the loss torque is statistically steady (:mod:`kegel.cfd_cases.steady`).
+
+Oil-bath time step: the Courant number is limited to ``max_courant`` (default 5) in the
+oil-filled gaps and ``max_interface_courant`` (default 1) at the free surface, with the momentum
+predictor (PIMPLE, one outer corrector, semi-implicit MULES). The former limits (0.5 / 0.5, no
+momentum predictor) needed 5-10 us steps. ``benchmarks/cfd_oil_bath_courant.py`` measures what the
+larger step costs on the steepest part of the start-up (tiny, 32208, 2000 rpm: 5 / 1 within
+1.5 %, 10 / 3 within 3.2 % of 0.5 / 0.5). The spin-up of the oil and its transport around the
+housing take tenths of a second of simulated time (0.25 s for the 32208 at 2000 rpm), so a fine
+mesh is best started from a coarse run of the same point (``initial_from``: the fields are mapped
+volume-conservatively).
 """
 
 from __future__ import annotations
@@ -39,9 +49,11 @@ from .foam import (FoamError, LogState, controldict_value, read_boundary_geometr
 from .forces import read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
+from .steady import SteadyDrift, steady_drift
 from .template import render_case
 
-__all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics"]
+__all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
+           "loss_torque_series"]
 
 INITIAL_ROTATION_FRACTION = 0.01
 AIR_DENSITY_KG_M3 = 1.2          # at 20-50 degC, 1 bar
@@ -70,6 +82,13 @@ class CfdPoint:
     max_iterations: int = 2000            # flooded: SIMPLE iteration limit
     steady_tolerance: float = 0.02         # relative change of the windowed mean torque
     max_wall_time_s: float | None = None   # stop (and write) when the run takes longer than this
+    max_courant: float = 5.0               # oil bath: time step limit (Courant number, oil-filled gaps)
+    max_interface_courant: float = 1.0     # oil bath: time step limit at the free surface
+    initial_from: str | None = None        # oil bath: a run of this point (another mesh) to start from
+    # Oil bath: forces are sampled every this many time steps. Each of the 22 ``forces`` objects
+    # evaluates the viscous stress over the whole mesh; sampling every step cost about 1 s of a
+    # 2.5 s step on the small mesh. Steps are tens of microseconds, so the histories keep their shape.
+    force_sample_steps: int = 5
 
     @property
     def flooded(self) -> bool:
@@ -82,6 +101,12 @@ class CfdPoint:
             raise ValueError(f"n_procs = {self.n_procs}: expected at least 1")
         if self.speed_rad_s == 0.0:
             raise ValueError("speed = 0: expected a turning shaft")
+        if not (isinstance(self.force_sample_steps, int) and self.force_sample_steps >= 1):
+            raise ValueError(f"force_sample_steps = {self.force_sample_steps!r}: expected a whole number of at least 1")
+        for name in ("max_courant", "max_interface_courant"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0.0):
+                raise ValueError(f"{name} = {value}: expected a positive Courant number")
 
 
 def kinematics(g, omega_i: float) -> dict[str, float]:
@@ -132,6 +157,21 @@ def _load(point: CfdPoint):
 
 #: Settings that may change when a run is resumed (they do not change the case itself).
 RESUMABLE_SETTINGS = ("max_wall_time_s", "max_iterations", "end_time_s", "steady_tolerance")
+
+
+#: Oil bath: the steady test's window, in cage revolutions (see _SteadyMonitor). The oil is
+#: carried around the housing at about the cage speed; in the 32208 start-up (tiny, 2000 rpm) the
+#: loss torque levels off after 3 shaft revolutions and rises again over the next 3 as the oil
+#: spreads through the bearing, so windows of a shaft revolution or less stop too early.
+STEADY_WINDOW_CAGE_REVOLUTIONS = 0.5
+
+
+def steady_window_s(point: CfdPoint) -> float:
+    """The window of the oil bath's steady test (simulated seconds)."""
+    from kegel.tribology import cage_speed_rad_s
+
+    _, g, _ = _load(point)
+    return STEADY_WINDOW_CAGE_REVOLUTIONS * 2 * math.pi / abs(cage_speed_rad_s(g, point.speed_rad_s))
 
 
 def _point_identity(point: CfdPoint) -> dict[str, Any]:
@@ -193,7 +233,9 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
                   "air_density_kg_m3": AIR_DENSITY_KG_M3, "air_nu_m2_s": AIR_KINEMATIC_VISCOSITY_M2_S,
                   "sigma_N_m": OIL_AIR_SURFACE_TENSION_N_M,
                   "box_min": (-1.0, -1.0, -1.0), "box_max": (1.0, y_level, 1.0),
-                  "first_delta_t": min(1e-5, rev / 2000)}
+                  "first_delta_t": min(1e-5, rev / 2000),
+                  "max_co": point.max_courant, "max_alpha_co": point.max_interface_courant,
+                  "force_sample_steps": point.force_sample_steps}
     params.update({
         "patch_names": patch_names, "rollers": rollers, "bodies": _bodies(cg),
         "inner_omega_rad_s": omega_i, "cage_omega_rad_s": kin["cage_rad_s"],
@@ -212,11 +254,14 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     _write_wall_velocities(tmp, kin, rollers)
     log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
         f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
+    initial = None
     if not point.flooded:
         run_utility(tmp, "setFields")
+        if point.initial_from is not None:
+            initial = _map_initial_state(tmp, point, log)
     if point.n_procs > 1:
         run_utility(tmp, "decomposePar", "-force")
-    meta = {"point": _point_json(point), "template": template, "kinematics": kin,
+    meta = {"point": _point_json(point), "template": template, "kinematics": kin, "initial_state": initial,
             "mesh": asdict(quality), "mesh_time_s": mesh_s,
             "lubricant": lub.as_dict(),
             "geometry": {"gap_m": cg.gap_m, "housing_clearance_m": cg.housing_clearance_m,
@@ -229,6 +274,64 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         shutil.rmtree(case_dir)
     tmp.rename(case_dir)
     return case_dir
+
+
+#: Point settings that may differ between a run and the run it starts from.
+_MAPPABLE_SETTINGS = ("mesh", "n_procs", "max_courant", "max_interface_courant", "initial_from",
+                      "force_sample_steps")
+
+
+def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) -> dict[str, Any]:
+    """Start an oil-bath case from the latest state of a run of the same point on another mesh.
+
+    The spin-up of the oil and its transport around the housing take a few tenths of a second
+    of simulated time; on a coarse mesh that costs a fraction of the fine mesh's time. The
+    fields are mapped with ``mapFieldsPar -mapMethod cellVolumeWeight`` (conservative where the
+    meshes overlap: the oil volume changes by the difference of the two discretised domains,
+    recorded here); the case keeps its own boundary conditions (exact wall velocities).
+    """
+    src = Path(point.initial_from)
+    meta_path = src / "kegel-case.json"
+    if not meta_path.is_file():
+        raise FoamError(f"initial_from = {src}: not a kegel CFD case (no kegel-case.json)")
+    src_point = json.loads(meta_path.read_text()).get("point", {})
+    mine = _point_json(point)
+    def same(a: Any, b: Any) -> bool:
+        if isinstance(a, float) and isinstance(b, float):
+            return math.isclose(a, b, rel_tol=1e-9)  # a temperature given in degC or K
+        return a == b
+
+    differ = sorted(k for k in set(mine) | set(src_point)
+                    if k not in _MAPPABLE_SETTINGS and k not in RESUMABLE_SETTINGS
+                    and not same(src_point.get(k), mine.get(k)))
+    if differ:
+        raise FoamError(f"initial_from = {src}: a run of another point (differs in {', '.join(differ)}); "
+                        "expected the same bearing, speed, temperature, oil level and lubricant")
+    times = [d for d in time_dirs(src) if (d / "U").is_file() and (d / "alpha.oil").is_file() and float(d.name) > 0]
+    if not times:
+        raise FoamError(f"initial_from = {src}: no reconstructed time with U and alpha.oil after 0 "
+                        "(run it first; kegel cfd run reconstructs its last time)")
+    source_time = times[-1].name
+    fields = ("U", "alpha.oil", "p_rgh")
+    originals = {f: (case / "0" / f).read_text() for f in fields}
+    run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
+    volume = read_field(case / "0" / "V")
+    (case / "0" / "V").unlink()
+    oil_before = float(read_field(case / "0" / "alpha.oil") @ volume)
+    log(f"cfd: mapping the state at t = {source_time} s of {src} onto this mesh (mapFieldsPar)")
+    run_utility(case, "mapFieldsPar", str(src.resolve()), "-consistent", "-sourceTime", source_time,
+                "-mapMethod", "cellVolumeWeight")
+    mapped = {f: read_field(case / "0" / f) for f in fields}
+    for f in fields:  # the mapped boundary values are the coarse mesh's: keep this case's own
+        (case / "0" / f).write_text(originals[f])
+        write_field_values(case / "0" / f, mapped[f])
+    for extra in ("p", "phi"):
+        (case / "0" / extra).unlink(missing_ok=True)
+    oil_after = float(mapped["alpha.oil"] @ volume)
+    change = oil_after / oil_before - 1.0
+    log(f"cfd: oil volume after mapping {oil_after:.6g} m3, {100 * change:+.3f} % against the level's")
+    return {"case": str(src.resolve()), "source_time_s": float(source_time), "source_mesh": src_point.get("mesh"),
+            "oil_volume_m3": oil_after, "oil_volume_of_the_level_m3": oil_before, "oil_volume_change": change}
 
 
 def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]]) -> None:
@@ -315,51 +418,76 @@ class _SteadyMonitor:
 
     Flooded (steady solver): over the last 20 % of the iterations (at least 40) the torques on
     the inner ring, the outer ring and the cage each change by less than a quarter of the
-    tolerance times the inner-ring torque, after at least 200 iterations. Oil bath: the inner-
-    ring torque's means over the last two windows of one cage revolution each differ by less
-    than the tolerance, after at least four windows.
+    tolerance times the inner-ring torque, after at least 200 iterations. Oil bath (transient):
+    the loss torque at the shaft (every body, :func:`loss_torque_series`) over three windows of
+    ``window_s``; steady when the change still to come, extrapolated from them
+    (:func:`~kegel.cfd_cases.steady.steady_drift`), and the last window-to-window change are both
+    within the tolerance. The result is then the mean over the last window.
     """
 
     BODIES = ("inner_ring", "outer_ring", "cage")
 
-    def __init__(self, case: Path, flooded: bool, window_s: float, tol: float):
-        self.case, self.flooded, self.window_s, self.tol = case, flooded, window_s, tol
+    def __init__(self, case: Path, flooded: bool, window_s: float, tol: float, meta: dict | None = None):
+        self.case, self.flooded, self.window_s, self.tol, self.meta = case, flooded, window_s, tol, meta
         self.last_check = 0.0
+        self.every_s = 3.0 if flooded else 15.0  # the oil bath reads every body's forces
         self.window: tuple[float, float] | None = None
+        self.drift: SteadyDrift | None = None
 
     def __call__(self, st: LogState) -> bool:
         now = time.monotonic()
-        if now - self.last_check < 3.0:
+        if now - self.last_check < self.every_s:
             return False
         self.last_check = now
         try:
-            series = {b: read_forces(self.case, f"forces_{b}") for b in self.BODIES}
+            if self.flooded:
+                return self._flooded()
+            t, loss = loss_torque_series(self.case, self.meta)
         except FoamError:
             return False
-        f = series["inner_ring"]
-        t, m = f.time, f.moment_total[:, 2]
-        if len(t) < 20:
+        d = steady_drift(t, loss, self.window_s)
+        if d is None:
             return False
-        if self.flooded:
-            if t[-1] < 200:
-                return False
-            k = max(int(0.2 * len(t)), 40)
-            scale = max(abs(float(m[-k:].mean())), 1e-300)
-            for b in self.BODIES:
-                seg = series[b].moment_total[-k:, 2]
-                if (seg.max() - seg.min()) > 0.25 * self.tol * scale:
-                    return False
-            self.window = (float(t[-k]), float(t[-1]))
-            return True
-        w = self.window_s
-        if t[-1] < 4 * w:
-            return False
-        last = m[t > t[-1] - w].mean()
-        prev = m[(t > t[-1] - 2 * w) & (t <= t[-1] - w)].mean()
-        if abs(last - prev) <= self.tol * max(abs(last), 1e-300):
-            self.window = (float(t[-1] - 2 * w), float(t[-1]))
+        self.drift = d
+        if d.steady(self.tol, abs(d.estimate)):
+            self.window = (float(t[-1] - self.window_s), float(t[-1]))
             return True
         return False
+
+    def _flooded(self) -> bool:
+        series = {b: read_forces(self.case, f"forces_{b}") for b in self.BODIES}
+        f = series["inner_ring"]
+        t, m = f.time, f.moment_total[:, 2]
+        if len(t) < 20 or t[-1] < 200:
+            return False
+        k = max(int(0.2 * len(t)), 40)
+        scale = max(abs(float(m[-k:].mean())), 1e-300)
+        for b in self.BODIES:
+            seg = series[b].moment_total[-k:, 2]
+            if (seg.max() - seg.min()) > 0.25 * self.tol * scale:
+                return False
+        self.window = (float(t[-k]), float(t[-1]))
+        return True
+
+
+def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The hydraulic loss torque at the shaft over time: the power the moving walls (rings,
+    shaft, cage, and each roller's orbit and spin) put into the oil, divided by the shaft
+    speed. It is linear in the forces, so its mean over a window is the loss of the mean forces."""
+    kin = meta["kinematics"]
+    omega_i, omega_c, omega_s = kin["inner_ring_rad_s"], kin["cage_rad_s"], kin["roller_spin_rad_s"]
+    t = read_forces(case, "forces_inner_ring").time
+    power = np.zeros_like(t)
+    for name, w in (("inner_ring", omega_i), ("shaft", omega_i), ("cage", omega_c)):
+        f = read_forces(case, f"forces_{name}")
+        power -= w * np.interp(t, f.time, f.moment_total[:, 2])
+    ez = np.array([0.0, 0.0, 1.0])
+    for r in meta["rollers"]:
+        f = read_forces(case, f"forces_{r['name']}")
+        c, a = np.array(r["centre_m"]), np.array(r["axis"])
+        p_k = f.force_total @ (omega_c * np.cross(ez, c)) + f.moment_total @ (omega_c * ez + omega_s * a)
+        power -= np.interp(t, f.time, p_k)
+    return t, power / abs(omega_i)
 
 
 def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None] = print,
@@ -371,8 +499,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     meta = json.loads((case / "kegel-case.json").read_text())
     kin = meta["kinematics"]
     solver = "simpleFoam" if point.flooded else "interFoam"
-    cage_rev = 2 * math.pi / abs(kin["cage_rad_s"])
-    monitor = _SteadyMonitor(case, point.flooded, cage_rev, point.steady_tolerance)
+    window = steady_window_s(point)
+    monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta)
     end = float(controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
     t0 = time.monotonic()
@@ -389,11 +517,11 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
 
     summary = run_solver(case, solver, n_procs=point.n_procs, end_time=end,
                          progress=_Progress() if progress else None, stop_when=stop_when,
-                         max_courant=25.0 if not point.flooded else 1e30)
+                         max_courant=max(25.0, 5.0 * point.max_courant) if not point.flooded else 1e30)
     runtime = time.monotonic() - t0
     if point.n_procs > 1 and time_dirs(case / "processor0"):
         run_utility(case, "reconstructPar", "-latestTime")
-    result = _postprocess(case, point, meta, monitor.window, summary.stopped_early or summary.state.ended)
+    result = _postprocess(case, point, meta, monitor.window, window)
     result.stopped_by = ("steady torque" if monitor.window is not None else
                          "wall-time budget" if budget_hit["hit"] else "end time / iteration limit")
     # a resumed run that had nothing left to do logs no time step: the case's latest time counts
@@ -402,8 +530,11 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     result.runtime_s = runtime + meta.get("runtime_before_s", 0.0)
     meta["runtime_before_s"] = result.runtime_s
     (case / "kegel-case.json").write_text(json.dumps(meta, indent=2))
-    out = {"provenance": provenance(), "fidelity": {"mesh": point.mesh, "cells": result.cells,
-                                                    "solver": solver, "n_procs": point.n_procs},
+    fidelity = {"mesh": point.mesh, "cells": result.cells, "solver": solver, "n_procs": point.n_procs}
+    if not point.flooded:
+        fidelity.update(max_courant=point.max_courant, max_interface_courant=point.max_interface_courant,
+                        initial_state=meta.get("initial_state"))
+    out = {"provenance": provenance(), "fidelity": fidelity,
            "point": result.point, "kinematics": kin, "runtime_s": result.runtime_s,
            "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,
            "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
@@ -412,6 +543,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
            "angular_momentum_balance": _balance(result.torques_Nm),
+           **({} if point.flooded else {"loss_torque_drift": _drift_json(case, meta, window)}),
            "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
@@ -427,19 +559,31 @@ def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
     return {"sum_of_wall_torques_Nm": total, "relative_to_drive_torque": total / drive if drive else float("nan")}
 
 
-def _postprocess(case: Path, point: CfdPoint, meta: dict, window, ended: bool) -> CfdResult:
+def _drift_json(case: Path, meta: dict, window_s: float) -> dict[str, Any]:
+    """How far the oil bath's loss torque is from its steady value (see kegel.cfd_cases.steady)."""
+    d = steady_drift(*loss_torque_series(case, meta), window_s)
+    if d is None:
+        return {"window_s": window_s, "note": "run shorter than three windows: no estimate"}
+    finite = math.isfinite(d.remaining)
+    return {"window_s": window_s, "window_means_Nm": list(d.means),
+            "estimated_steady_Nm": d.estimate if finite else None,
+            "remaining_change_Nm": d.remaining if finite else None,
+            "note": "extrapolated from three window means" if finite else
+                    "the drift does not slow down: no estimate of the steady value"}
+
+
+def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: float) -> CfdResult:
     kin = meta["kinematics"]
     omega_i, omega_c, omega_s = kin["inner_ring_rad_s"], kin["cage_rad_s"], kin["roller_spin_rad_s"]
     f_ir = read_forces(case, "forces_inner_ring")
     t = f_ir.time
     if window is None:
         # not steady: average over the last 10 % of the iterations (flooded), or over the last
-        # cage revolution when the run lasted two, else over the last 20 % of the simulated time
-        cage_rev = 2 * math.pi / abs(omega_c)
+        # window of the steady test when the run lasted three, else over the last 20 % of the time
         if point.flooded:
             span = 0.1 * (t[-1] - t[0])
         else:
-            span = cage_rev if t[-1] - t[0] >= 2 * cage_rev else 0.2 * (t[-1] - t[0])
+            span = window_s if t[-1] - t[0] >= 3 * window_s else 0.2 * (t[-1] - t[0])
         window = (float(max(t[-1] - span, t[0])), float(t[-1]))
         steady = False
     else:

@@ -95,8 +95,8 @@ def test_tiny_mesh_is_clean_and_has_every_patch(designation, tmp_path):
         assert (np.linalg.norm(ours[name][1], axis=1) > 0).all()
 
 
-def _bad(*args):
-    res = run_kegel("cfd", "run", *args)
+def _bad(*args, level: str = "flooded"):
+    res = run_kegel("cfd", "run", "--oil-level", level, *args)
     assert res.returncode == 2, res.stderr
     return res.stderr
 
@@ -106,6 +106,10 @@ def test_cfd_run_rejects_bad_input():
     assert "--oil-level" in _bad("--oil-level", "90 mm")
     assert "--speed" in _bad("--speed", "0 rpm")
     assert "--np" in _bad("--np", "0")
+    assert "--max-courant" in _bad("--max-courant", "-1") and "positive" in _bad("--max-courant", "nan")
+    assert "--max-interface-courant" in _bad("--max-interface-courant", "0")
+    assert "--initial-from" in _bad("--initial-from", "/nonexistent", level="shaft_center")
+    assert "oil-bath" in _bad("--initial-from", "/nonexistent")  # flooded runs start from rest
 
 
 SPEED = 2000 * math.pi / 30
@@ -161,15 +165,26 @@ def test_tiny_flooded_case_converges_and_balances_angular_momentum(tmp_path):
     assert data["loss_torque_at_shaft_Nm"] == pytest.approx(59.3e-3, rel=0.03)
 
 
-@pytest.mark.openfoam
-def test_tiny_oil_bath_case_runs_with_conserved_oil(tmp_path):
-    """Through the command line, as a user runs it: results, torque history and oil picture."""
-    case = tmp_path / "bath"
+@pytest.fixture(scope="module")
+def tiny_bath(tmp_path_factory):
+    """The tiny oil-bath case of the 32208, run through the command line for 0.3 ms."""
+    case = tmp_path_factory.mktemp("cfd") / "bath"
     res = run_kegel("cfd", "run", "--bearing", "32208", "--speed", "2000 rpm", "--temperature", "50 degC",
                     "--oil-level", "shaft_center", "--mesh", "tiny", "--np", "2", "--end-time", "0.3 ms",
                     "--output", str(case), "--quiet", "--format", "json", timeout=900)
+    return case, res
+
+
+@pytest.mark.openfoam
+def test_tiny_oil_bath_case_runs_with_conserved_oil(tiny_bath):
+    """Through the command line, as a user runs it: results, torque history and oil picture."""
+    case, res = tiny_bath
     assert res.returncode == 0, res.stderr[-3000:]
     data = json.loads(res.stdout)
+    assert data["fidelity"]["max_courant"] == 5.0
+    # the steady test's window is half a cage revolution; 0.3 ms is far too short for an estimate
+    assert data["loss_torque_drift"]["window_s"] == pytest.approx(math.pi / data["kinematics"]["cage_rad_s"])
+    assert "estimated_steady_Nm" not in data["loss_torque_drift"] and not data["steady"]
     t = data["torques_Nm"]
     assert _finite([t[k]["total"] for k in ("inner_ring", "outer_ring", "cage")])
     assert t["inner_ring"]["total"] < 0
@@ -180,6 +195,35 @@ def test_tiny_oil_bath_case_runs_with_conserved_oil(tmp_path):
     for name in ("torque_history", "oil_distribution"):
         assert (case / f"{name}.png").stat().st_size > 10_000
     assert data["liebrecht_Nm"]["total_Nm"] > 0
+
+
+@pytest.mark.openfoam
+def test_oil_bath_starts_from_a_run_on_another_mesh(tiny_bath, tmp_path):
+    """Coarse-to-fine start: the mapped state keeps the oil volume and this case's own walls."""
+    from kegel.cfd_cases.foam import FoamError, read_field
+    from kegel.cfd_cases.run import prepare_case
+
+    source, res = tiny_bath
+    assert res.returncode == 0, res.stderr[-3000:]
+    level = 0.5 * load_bearing("32208").outer_diameter_m
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=level, mesh="tiny",
+                 n_procs=1, initial_from=str(source))
+    case = prepare_case(p, tmp_path / "mapped", log=lambda s: None)
+    meta = json.loads((case / "kegel-case.json").read_text())
+    init = meta["initial_state"]
+    assert init["source_time_s"] == pytest.approx(3e-4, rel=1e-3)
+    assert abs(init["oil_volume_change"]) < 2e-3
+    # the oil moves as in the source (not the 1 % start rotation) ...
+    u = read_field(case / "0" / "U")
+    u_src = read_field(source / f"{init['source_time_s']:g}" / "U")
+    speed, speed_src = np.linalg.norm(u, axis=1), np.linalg.norm(u_src, axis=1)
+    assert np.percentile(speed, 90) == pytest.approx(np.percentile(speed_src, 90), rel=0.05)
+    # ... and the walls keep their exact velocities
+    text = (case / "0" / "U").read_text()
+    assert '#include "wallVelocity/inner_ring"' in text
+    with pytest.raises(FoamError, match="another point"):
+        prepare_case(CfdPoint(bearing="32208", speed_rad_s=0.5 * SPEED, temperature_K=323.15, oil_level_m=level,
+                              mesh="tiny", n_procs=1, initial_from=str(source)), tmp_path / "other")
 
 
 @pytest.mark.openfoam
