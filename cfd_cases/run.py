@@ -38,7 +38,7 @@ import shutil
 import sys
 import time
 from collections.abc import Callable
-from dataclasses import asdict, dataclass, field
+from dataclasses import MISSING, asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
@@ -200,7 +200,9 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     meta_path = case_dir / "kegel-case.json"
     if meta_path.is_file():
         meta = json.loads(meta_path.read_text())
-        old = {k: v for k, v in meta.get("point", {}).items() if k not in RESUMABLE_SETTINGS}
+        # settings added since the case was made count with their defaults
+        defaults = {f.name: f.default for f in fields(CfdPoint) if f.default is not MISSING}
+        old = {k: v for k, v in {**defaults, **meta.get("point", {})}.items() if k not in RESUMABLE_SETTINGS}
         if old != _point_identity(point):
             raise FoamError(f"{case_dir} holds a case of another point ({meta_path}); choose another folder")
         log(f"cfd: resuming the case in {case_dir} from its latest time")

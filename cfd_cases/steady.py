@@ -11,8 +11,9 @@ consecutive window means m1, m2, m3 (differences d1 = m2 - m1, d2 = m3 - m2):
   ``m3`` plus it estimates the steady value.
 - d1 and d2 of one sign with ``q >= 1``: the drift does not slow down; the remaining change is
   unknown (infinite).
-- opposite signs: the window means scatter about a level; the scatter ``|d2|`` is the
-  uncertainty and ``m3`` the estimate.
+- opposite signs: the window means scatter about a level, or a trend has just stopped; the
+  larger of ``|d1|`` and ``|d2|`` is the uncertainty and ``m3`` the estimate. (A drop that ends
+  in the second window gives a large d1 and a small d2 of the other sign: not steady yet.)
 
 Window means are time averages (trapezoidal rule), so a variable time step does not weight them.
 """
@@ -33,7 +34,8 @@ class SteadyDrift:
 
     means: tuple[float, float, float]
     estimate: float          # estimated steady value
-    remaining: float         # estimated change still to come (signed; inf when unknown)
+    remaining: float         # estimated change still to come (signed; the scatter when the
+                             # window means scatter; inf when unknown)
     window: tuple[float, float]  # the time span of the three windows
 
     def steady(self, tol: float, scale: float) -> bool:
@@ -70,11 +72,12 @@ def steady_drift(t: np.ndarray, y: np.ndarray, window: float) -> SteadyDrift | N
     if d1 * d2 > 0.0:
         q = d2 / d1
         remaining = d2 * q / (1.0 - q) if q < 1.0 else math.copysign(math.inf, d2)
-    elif d2 == 0.0:
-        remaining = 0.0
     else:
-        remaining = 0.0  # scatter about a level: no trend to extrapolate, |d2| is the spread
+        remaining = 0.0
+    # no trend to extrapolate (scatter, or a trend that stopped): the estimate is the last mean
     estimate = float(m[2] + remaining) if math.isfinite(remaining) else float(m[2])
+    if d1 * d2 <= 0.0:
+        remaining = max(abs(d1), abs(d2))
     t_end = float(t[-1])
     return SteadyDrift(means=(float(m[0]), float(m[1]), float(m[2])), estimate=estimate,
                        remaining=float(remaining), window=(t_end - 3 * window, t_end))
