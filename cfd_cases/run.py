@@ -24,10 +24,10 @@ oil-filled gaps and ``max_interface_courant`` (default 1) at the free surface, w
 predictor (PIMPLE, one outer corrector, semi-implicit MULES). The former limits (0.5 / 0.5, no
 momentum predictor) needed 5-10 us steps. ``benchmarks/cfd_oil_bath_courant.py`` measures what the
 larger step costs on the steepest part of the start-up (tiny, 32208, 2000 rpm: 5 / 1 within
-1.5 %, 10 / 3 within 3.2 % of 0.5 / 0.5). The spin-up of the oil and its transport around the
-housing take tenths of a second of simulated time (0.25 s for the 32208 at 2000 rpm), so a fine
-mesh is best started from a coarse run of the same point (``initial_from``: the fields are mapped
-volume-conservatively).
+1.5 % of 0.5 / 0.5 at 2.8 times its speed, 10 / 3 within 3.1 % at 8.4 times). The spin-up of the
+oil and its transport around the housing take tenths of a second of simulated time (0.2 s for
+the 32208 at 2000 rpm), so a fine mesh is best started from a coarse run of the same point
+(``initial_from``: the fields are mapped volume-conservatively).
 """
 
 from __future__ import annotations
