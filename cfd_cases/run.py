@@ -49,7 +49,7 @@ from .foam import (FoamError, LogState, controldict_value, read_boundary_geometr
 from .forces import read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
-from .steady import SteadyDrift, steady_drift
+from .steady import steady_drift
 from .template import render_case
 
 __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
@@ -166,19 +166,25 @@ RESUMABLE_SETTINGS = ("max_wall_time_s", "max_iterations", "end_time_s", "steady
 STEADY_WINDOW_CAGE_REVOLUTIONS = 0.5
 
 
-def steady_window_s(point: CfdPoint) -> float:
-    """The window of the oil bath's steady test (simulated seconds)."""
-    from kegel.tribology import cage_speed_rad_s
-
-    _, g, _ = _load(point)
-    return STEADY_WINDOW_CAGE_REVOLUTIONS * 2 * math.pi / abs(cage_speed_rad_s(g, point.speed_rad_s))
+def steady_window_s(cage_rad_s: float) -> float:
+    """The window of the oil bath's steady test (simulated seconds) at the cage speed ``cage_rad_s``."""
+    return STEADY_WINDOW_CAGE_REVOLUTIONS * 2 * math.pi / abs(cage_rad_s)
 
 
-def _point_identity(point: CfdPoint) -> dict[str, Any]:
-    d = _point_json(point)
-    for k in RESUMABLE_SETTINGS:
-        d.pop(k, None)
-    return d
+def _differing_settings(stored: dict[str, Any], point: CfdPoint, ignore: tuple[str, ...],
+                        rel_tol: float = 0.0) -> list[str]:
+    """The settings in which a point stored in a kegel-case.json differs from ``point``, apart
+    from ``ignore``. Settings added to :class:`CfdPoint` since the case was made count with their
+    defaults; floats agree within ``rel_tol`` (0: exactly)."""
+    defaults = {f.name: f.default for f in fields(CfdPoint) if f.default is not MISSING}
+    old, new = {**defaults, **stored}, _point_json(point)
+
+    def same(a: Any, b: Any) -> bool:
+        if isinstance(a, float) and isinstance(b, float):
+            return math.isclose(a, b, rel_tol=rel_tol)
+        return a == b
+
+    return sorted(k for k in set(old) | set(new) if k not in ignore and not same(old.get(k), new.get(k)))
 
 
 def _point_json(point: CfdPoint) -> dict[str, Any]:
@@ -200,11 +206,10 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     meta_path = case_dir / "kegel-case.json"
     if meta_path.is_file():
         meta = json.loads(meta_path.read_text())
-        # settings added since the case was made count with their defaults
-        defaults = {f.name: f.default for f in fields(CfdPoint) if f.default is not MISSING}
-        old = {k: v for k, v in {**defaults, **meta.get("point", {})}.items() if k not in RESUMABLE_SETTINGS}
-        if old != _point_identity(point):
-            raise FoamError(f"{case_dir} holds a case of another point ({meta_path}); choose another folder")
+        differ = _differing_settings(meta.get("point", {}), point, RESUMABLE_SETTINGS)
+        if differ:
+            raise FoamError(f"{case_dir} holds a case of another point ({meta_path}: differs in "
+                            f"{', '.join(differ)}); choose another folder")
         log(f"cfd: resuming the case in {case_dir} from its latest time")
         end = point.max_iterations if point.flooded else point.end_time_s
         if end is not None:
@@ -297,15 +302,8 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     if not meta_path.is_file():
         raise FoamError(f"initial_from = {src}: not a kegel CFD case (no kegel-case.json)")
     src_point = json.loads(meta_path.read_text()).get("point", {})
-    mine = _point_json(point)
-    def same(a: Any, b: Any) -> bool:
-        if isinstance(a, float) and isinstance(b, float):
-            return math.isclose(a, b, rel_tol=1e-9)  # a temperature given in degC or K
-        return a == b
-
-    differ = sorted(k for k in set(mine) | set(src_point)
-                    if k not in _MAPPABLE_SETTINGS and k not in RESUMABLE_SETTINGS
-                    and not same(src_point.get(k), mine.get(k)))
+    # floats within 1e-9: the same temperature given in degC or K
+    differ = _differing_settings(src_point, point, RESUMABLE_SETTINGS + _MAPPABLE_SETTINGS, rel_tol=1e-9)
     if differ:
         raise FoamError(f"initial_from = {src}: a run of another point (differs in {', '.join(differ)}); "
                         "expected the same bearing, speed, temperature, oil level and lubricant")
@@ -434,7 +432,6 @@ class _SteadyMonitor:
         self.last_check = 0.0
         self.every_s = 3.0 if flooded else 15.0  # the oil bath reads every body's forces
         self.window: tuple[float, float] | None = None
-        self.drift: SteadyDrift | None = None
 
     def __call__(self, st: LogState) -> bool:
         now = time.monotonic()
@@ -450,7 +447,6 @@ class _SteadyMonitor:
         d = steady_drift(t, loss, self.window_s)
         if d is None:
             return False
-        self.drift = d
         if d.steady(self.tol, abs(d.estimate)):
             self.window = (float(t[-1] - self.window_s), float(t[-1]))
             return True
@@ -472,24 +468,33 @@ class _SteadyMonitor:
         return True
 
 
+def _turning_walls(kin: dict[str, float]) -> dict[str, float]:
+    """The walls that turn about the bearing axis, and their speeds (rad/s)."""
+    return {"inner_ring": kin["inner_ring_rad_s"], "shaft": kin["inner_ring_rad_s"], "cage": kin["cage_rad_s"]}
+
+
+def _roller_motion(roller: dict[str, Any], kin: dict[str, float]) -> tuple[np.ndarray, np.ndarray]:
+    """A roller's centre velocity (its orbit) and absolute angular velocity (orbit plus spin)."""
+    ez = np.array([0.0, 0.0, 1.0])
+    c, a = np.array(roller["centre_m"]), np.array(roller["axis"])
+    return kin["cage_rad_s"] * np.cross(ez, c), kin["cage_rad_s"] * ez + kin["roller_spin_rad_s"] * a
+
+
 def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
     """The hydraulic loss torque at the shaft over time: the power the moving walls (rings,
     shaft, cage, and each roller's orbit and spin) put into the oil, divided by the shaft
     speed. It is linear in the forces, so its mean over a window is the loss of the mean forces."""
     kin = meta["kinematics"]
-    omega_i, omega_c, omega_s = kin["inner_ring_rad_s"], kin["cage_rad_s"], kin["roller_spin_rad_s"]
     t = read_forces(case, "forces_inner_ring").time
     power = np.zeros_like(t)
-    for name, w in (("inner_ring", omega_i), ("shaft", omega_i), ("cage", omega_c)):
+    for name, w in _turning_walls(kin).items():
         f = read_forces(case, f"forces_{name}")
         power -= w * np.interp(t, f.time, f.moment_total[:, 2])
-    ez = np.array([0.0, 0.0, 1.0])
     for r in meta["rollers"]:
         f = read_forces(case, f"forces_{r['name']}")
-        c, a = np.array(r["centre_m"]), np.array(r["axis"])
-        p_k = f.force_total @ (omega_c * np.cross(ez, c)) + f.moment_total @ (omega_c * ez + omega_s * a)
-        power -= np.interp(t, f.time, p_k)
-    return t, power / abs(omega_i)
+        v_c, w_abs = _roller_motion(r, kin)
+        power -= np.interp(t, f.time, f.force_total @ v_c + f.moment_total @ w_abs)
+    return t, power / abs(kin["inner_ring_rad_s"])
 
 
 def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None] = print,
@@ -501,7 +506,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     meta = json.loads((case / "kegel-case.json").read_text())
     kin = meta["kinematics"]
     solver = "simpleFoam" if point.flooded else "interFoam"
-    window = steady_window_s(point)
+    window = steady_window_s(kin["cage_rad_s"])
     monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta)
     end = float(controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
@@ -576,7 +581,7 @@ def _drift_json(case: Path, meta: dict, window_s: float) -> dict[str, Any]:
 
 def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: float) -> CfdResult:
     kin = meta["kinematics"]
-    omega_i, omega_c, omega_s = kin["inner_ring_rad_s"], kin["cage_rad_s"], kin["roller_spin_rad_s"]
+    turning = _turning_walls(kin)
     f_ir = read_forces(case, "forces_inner_ring")
     t = f_ir.time
     if window is None:
@@ -605,19 +610,16 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
               "pressure": float(mean(f.moment_pressure[:, 2], f.time)),
               "viscous": float(mean(f.moment_viscous[:, 2], f.time))}
         torques[name] = mz
-        w = {"inner_ring": omega_i, "shaft": omega_i, "cage": omega_c}.get(name, 0.0)
-        power -= mz["total"] * w
+        power -= mz["total"] * turning.get(name, 0.0)
     rollers = []
     spin_sum = {"total": 0.0, "pressure": 0.0, "viscous": 0.0}
-    ez = np.array([0.0, 0.0, 1.0])
     for r in meta["rollers"]:
         f = read_forces(case, f"forces_{r['name']}")
         F = mean(f.force_total, f.time)
         M = mean(f.moment_total, f.time)
         a = np.array(r["axis"])
         c = np.array(r["centre_m"])
-        v_c = omega_c * np.cross(ez, c)
-        w_abs = omega_c * ez + omega_s * a
+        v_c, w_abs = _roller_motion(r, kin)
         p_k = float(F @ v_c + M @ w_abs)
         power -= p_k
         spin = {"total": float(M @ a), "pressure": float(mean(f.moment_pressure, f.time) @ a),
@@ -640,7 +642,7 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
         volume = _read_liquid_volume(vol_file)
     cells = int(meta["mesh"]["cells"])
     return CfdResult(case=case, point=meta["point"], torques_Nm=torques, rollers=rollers, cage=cage,
-                     power_loss_W=power, loss_torque_at_shaft_Nm=power / abs(omega_i),
+                     power_loss_W=power, loss_torque_at_shaft_Nm=power / abs(kin["inner_ring_rad_s"]),
                      window_s=window, steady=steady, liquid_volume=volume, cells=cells)
 
 

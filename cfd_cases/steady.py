@@ -69,15 +69,13 @@ def steady_drift(t: np.ndarray, y: np.ndarray, window: float) -> SteadyDrift | N
     if m is None:
         return None
     d1, d2 = m[1] - m[0], m[2] - m[1]
-    if d1 * d2 > 0.0:
-        q = d2 / d1
-        remaining = d2 * q / (1.0 - q) if q < 1.0 else math.copysign(math.inf, d2)
-    else:
-        remaining = 0.0
-    # no trend to extrapolate (scatter, or a trend that stopped): the estimate is the last mean
-    estimate = float(m[2] + remaining) if math.isfinite(remaining) else float(m[2])
-    if d1 * d2 <= 0.0:
-        remaining = max(abs(d1), abs(d2))
+    q = d2 / d1 if d1 * d2 > 0.0 else None
+    if q is not None and q < 1.0:  # geometric approach: the tail of the series of changes
+        remaining = d2 * q / (1.0 - q)
+        estimate = float(m[2] + remaining)
+    else:  # no trend to extrapolate: the estimate is the last mean
+        remaining = math.copysign(math.inf, d2) if q is not None else max(abs(d1), abs(d2))
+        estimate = float(m[2])
     t_end = float(t[-1])
     return SteadyDrift(means=(float(m[0]), float(m[1]), float(m[2])), estimate=estimate,
                        remaining=float(remaining), window=(t_end - 3 * window, t_end))
