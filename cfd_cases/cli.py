@@ -54,6 +54,15 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         if not (math.isfinite(co) and co > 0.0):
             raise KegelInputError(src, key, co, "a positive Courant number")
         extra[name] = co
+    start = getattr(args, "start_on", None)
+    if start:  # see _start_run
+        levels = list(MESH_LEVELS)
+        if start not in MESH_LEVELS:
+            raise KegelInputError(src, "--start-on", start, f"one of {', '.join(MESH_LEVELS)}")
+        if levels.index(start) >= levels.index(args.mesh):
+            raise KegelInputError(src, "--start-on", start, f"a mesh level coarser than --mesh {args.mesh}")
+        if getattr(args, "initial_from", None):
+            raise KegelInputError(src, "--start-on", start, "either --start-on or --initial-from, not both")
     init = getattr(args, "initial_from", None)
     if init:
         if level is None:
@@ -87,13 +96,63 @@ def _liebrecht(point) -> dict[str, float]:
             "total_Nm": t.total_Nm}
 
 
+def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
+    """``--start-on MESH``: run the oil-bath point on the coarser mesh first and start the
+    requested mesh from its last state (``initial_from``). The spin-up of the oil and its
+    transport around the housing (tenths of a second of simulated time) then cost the coarse
+    mesh's time; the fine mesh only has to settle (three steady windows). Returns the point to
+    run and a summary of the start run (``None`` when the case already exists and resumes)."""
+    import dataclasses
+    import time
+
+    from .foam import FoamError
+    from .run import run_case
+
+    start = getattr(args, "start_on", None)
+    if not start:
+        return point, None
+    if point.flooded:
+        print("cfd: --start-on applies to oil-bath points; the flooded point starts from rest", file=sys.stderr)
+        return point, None
+    start_case = case.with_name(f"{case.name}_start_{start}")
+    fine = dataclasses.replace(point, initial_from=str(start_case.resolve()))
+    if (case / "kegel-case.json").is_file():
+        return fine, None  # the case was started from it before: it resumes
+    t0 = time.monotonic()
+    done = start_case / "results.json"
+    if done.is_file() and json.loads(done.read_text()).get("steady"):
+        print(f"cfd: start run {start_case} is steady; starting mesh {point.mesh} from it", file=sys.stderr)
+    else:
+        print(f"cfd: start run on mesh {start} in {start_case}", file=sys.stderr)
+        run_case(dataclasses.replace(point, mesh=start), start_case, progress=not args.quiet,
+                 log=lambda s: print(s, file=sys.stderr))
+    data = json.loads(done.read_text())
+    wall = time.monotonic() - t0
+    if point.max_wall_time_s is not None:
+        left = point.max_wall_time_s - wall
+        if left <= 0.0:
+            raise FoamError(f"the start run on mesh {start} ({start_case}) used the whole wall-time budget "
+                            f"of {point.max_wall_time_s:.0f} s; run again with a larger --max-wall-time "
+                            "(both runs resume)")
+        fine = dataclasses.replace(fine, max_wall_time_s=left)
+    summary = {"case": str(start_case.resolve()), "mesh": start, "cells": data["fidelity"]["cells"],
+               "steady": data["steady"], "stopped_by": data.get("stopped_by"),
+               "simulated_time_s": data.get("simulated_time_s"), "runtime_s": data["runtime_s"],
+               "wall_time_s": wall, "loss_torque_at_shaft_Nm": data["loss_torque_at_shaft_Nm"]}
+    return fine, summary
+
+
 def _run_one(point, case: Path, args) -> dict[str, Any]:
+    import time
+
     from kegel.io import atomic_write_json
 
     from .foam import time_dirs
     from .plots import plot_oil_distribution, plot_torque_history
     from .run import run_case
 
+    t0 = time.monotonic()
+    point, start = _start_run(point, case, args)
     res = run_case(point, case, progress=not args.quiet, log=lambda s: print(s, file=sys.stderr))
     meta = json.loads((case / "kegel-case.json").read_text())
     pictures = {"torque_history": str(plot_torque_history(case, res.window_s, case / "torque_history.png",
@@ -111,6 +170,9 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
     data = json.loads((case / "results.json").read_text())
     data["liebrecht_Nm"] = lieb
     data["pictures"] = pictures
+    if start is not None:  # the chain of this call: start run, mapping, this run
+        data["start_run"] = start
+        data["chain_wall_time_s"] = time.monotonic() - t0
     atomic_write_json(case / "results.json", data)
     return data
 
@@ -126,6 +188,11 @@ def _cmd_run(args: argparse.Namespace) -> int:
     print(f"CFD {point.bearing}, {point.speed_rad_s * 30 / math.pi:g} rpm, oil level {args.oil_level}, "
           f"{point.temperature_K - 273.15:g} degC, mesh {point.mesh} ({data['fidelity']['cells']} cells), "
           f"{point.n_procs} core(s): {data['runtime_s']:.0f} s, steady: {data['steady']}")
+    if "start_run" in data:
+        st = data["start_run"]
+        print(f"started from a run on mesh {st['mesh']} ({st['cells']} cells, {st['runtime_s']:.0f} s, "
+              f"steady: {st['steady']}, loss torque {st['loss_torque_at_shaft_Nm']:.4g} N m); "
+              f"the chain took {data['chain_wall_time_s'] / 60:.1f} min wall time")
     print(f"{'body':<28}{'total':>12}{'pressure':>12}{'viscous':>12}   (torque about the axis, N m)")
     for name in ("inner_ring", "outer_ring", "cage", "rollers_spin_sum"):
         v = t[name]
@@ -157,6 +224,7 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
                          "cfd_outer_ring_Nm": data["torques_Nm"]["outer_ring"]["total"],
                          "liebrecht_total_Nm": data["liebrecht_Nm"]["total_Nm"],
                          "runtime_s": data["runtime_s"], "cells": data["fidelity"]["cells"],
+                         "start_run": data.get("start_run"), "chain_wall_time_s": data.get("chain_wall_time_s"),
                          "case": str(case)})
     out.mkdir(parents=True, exist_ok=True)
     atomic_write_json(out / "sweep.json", {"rows": rows})
@@ -251,6 +319,9 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--initial-from",
                         help="oil bath: start from the last state of a run of the same point on another mesh "
                              "(case folder), e.g. the tiny run before a small one")
+        sp.add_argument("--start-on", metavar="MESH",
+                        help="oil bath: run the point on this coarser mesh first (to a steady loss torque) "
+                             "and start --mesh from its last state; e.g. --mesh small --start-on tiny")
         sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")

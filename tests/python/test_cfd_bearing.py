@@ -110,6 +110,11 @@ def test_cfd_run_rejects_bad_input():
     assert "--max-interface-courant" in _bad("--max-interface-courant", "0")
     assert "--initial-from" in _bad("--initial-from", "/nonexistent", level="shaft_center")
     assert "oil-bath" in _bad("--initial-from", "/nonexistent")  # flooded runs start from rest
+    assert "coarser than --mesh tiny" in _bad("--start-on", "small", level="shaft_center")
+    assert "coarser than --mesh small" in _bad("--start-on", "fine", "--mesh", "small", level="shaft_center")
+    assert "tiny, small, fine" in _bad("--start-on", "huge", "--mesh", "small", level="shaft_center")
+    assert "not both" in _bad("--start-on", "tiny", "--mesh", "small", "--initial-from", "/nonexistent",
+                              level="shaft_center")
 
 
 SPEED = 2000 * math.pi / 30
@@ -224,6 +229,38 @@ def test_oil_bath_starts_from_a_run_on_another_mesh(tiny_bath, tmp_path):
     with pytest.raises(FoamError, match="another point"):
         prepare_case(CfdPoint(bearing="32208", speed_rad_s=0.5 * SPEED, temperature_K=323.15, oil_level_m=level,
                               mesh="tiny", n_procs=1, initial_from=str(source)), tmp_path / "other")
+
+
+@pytest.mark.openfoam
+def test_start_on_runs_the_coarse_mesh_first_and_resumes_without_it(tmp_path):
+    """``--mesh small --start-on tiny``: the tiny run, the mapping and the small run in one call;
+    calling it again resumes the small case and leaves the start run alone."""
+    case = tmp_path / "bath_small"
+    cmd = ("cfd", "run", "--bearing", "32208", "--speed", "2000 rpm", "--temperature", "50 degC",
+           "--oil-level", "shaft_center", "--mesh", "small", "--start-on", "tiny", "--np", "2",
+           "--max-courant", "10", "--max-interface-courant", "3", "--output", str(case), "--quiet",
+           "--format", "json")
+    res = run_kegel(*cmd, "--end-time", "0.1 ms", timeout=900)
+    assert res.returncode == 0, res.stderr[-3000:]
+    data = json.loads(res.stdout)
+    start = data["start_run"]
+    assert start["mesh"] == "tiny" and start["simulated_time_s"] == pytest.approx(1e-4, rel=1e-3)
+    assert start["case"] == str((tmp_path / "bath_small_start_tiny").resolve())
+    assert 0 < start["cells"] < data["fidelity"]["cells"]
+    init = data["fidelity"]["initial_state"]
+    assert init["source_mesh"] == "tiny" and init["source_time_s"] == pytest.approx(1e-4, rel=1e-3)
+    assert abs(init["oil_volume_change"]) < 2e-3
+    assert data["chain_wall_time_s"] > start["runtime_s"] + data["runtime_s"]
+    assert data["simulated_time_s"] == pytest.approx(1e-4, rel=1e-3)
+    stamp = (tmp_path / "bath_small_start_tiny" / "results.json").stat().st_mtime_ns
+    res = run_kegel(*cmd, "--end-time", "0.15 ms", timeout=900)
+    assert res.returncode == 0, res.stderr[-3000:]
+    assert "resuming the case" in res.stderr and "start run" not in res.stderr
+    again = json.loads(res.stdout)
+    assert "start_run" not in again
+    # the solver ends within half a step of the end time (0.15 ms is no write time: steps of ~7 us)
+    assert data["simulated_time_s"] < again["simulated_time_s"] == pytest.approx(1.5e-4, rel=0.05)
+    assert (tmp_path / "bath_small_start_tiny" / "results.json").stat().st_mtime_ns == stamp
 
 
 @pytest.mark.openfoam
