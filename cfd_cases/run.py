@@ -172,6 +172,22 @@ def steady_window_s(cage_rad_s: float) -> float:
     return STEADY_WINDOW_CAGE_REVOLUTIONS * 2 * math.pi / abs(cage_rad_s)
 
 
+#: Oil bath: the steady test applies only after this many cage revolutions from rest (counting
+#: the run a case was started from, ``initial_from``). The 32208 start-up (tiny, 2000 rpm) has a
+#: false plateau: the loss torque falls to 17.6 mN m at 1.1-1.6 cage revolutions (80-115 ms), stays
+#: there for 3 windows, then rises by 30 % as the oil spreads through the bearing and levels off
+#: from 2.4 cage revolutions (0.17 s). A run at Courant 5 / 1 stopped on the plateau at 0.128 s
+#: with 17.9 mN m, where two runs at 10 / 3 had already begun to rise and went on to 22.7-23.0.
+#: Three cage revolutions put the steady test's three windows after the plateau's start. This
+#: is taken from one case's start-up; other speeds and levels may need more (see the README).
+STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST = 3.0
+
+
+def steady_min_time_s(cage_rad_s: float) -> float:
+    """Simulated time from rest before the oil bath's steady test applies (see above)."""
+    return STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST * 2 * math.pi / abs(cage_rad_s)
+
+
 def _differing_settings(stored: dict[str, Any], point: CfdPoint, ignore: tuple[str, ...],
                         rel_tol: float = 0.0) -> list[str]:
     """The settings in which a point stored in a kegel-case.json differs from ``point``, apart
@@ -289,6 +305,13 @@ _MAPPABLE_SETTINGS = ("mesh", "n_procs", "max_courant", "max_interface_courant",
                       "force_sample_steps")
 
 
+def time_from_rest_at_start_s(meta: dict[str, Any]) -> float:
+    """Simulated time from rest at the start of a case (the time of the state it was mapped
+    from, plus that run's own start, and so on; 0 for a run from rest)."""
+    init = meta.get("initial_state") or {}
+    return float(init.get("time_from_rest_s", init.get("source_time_s", 0.0)))
+
+
 def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) -> dict[str, Any]:
     """Start an oil-bath case from the latest state of a run of the same point on another mesh.
 
@@ -302,7 +325,8 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     meta_path = src / "kegel-case.json"
     if not meta_path.is_file():
         raise FoamError(f"initial_from = {src}: not a kegel CFD case (no kegel-case.json)")
-    src_point = json.loads(meta_path.read_text()).get("point", {})
+    src_meta = json.loads(meta_path.read_text())
+    src_point = src_meta.get("point", {})
     # floats within 1e-9: the same temperature given in degC or K
     differ = _differing_settings(src_point, point, RESUMABLE_SETTINGS + _MAPPABLE_SETTINGS, rel_tol=1e-9)
     if differ:
@@ -332,6 +356,7 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     change = oil_after / oil_before - 1.0
     log(f"cfd: oil volume after mapping {oil_after:.6g} m3, {100 * change:+.3f} % against the level's")
     return {"case": str(src.resolve()), "source_time_s": float(source_time), "source_mesh": src_point.get("mesh"),
+            "time_from_rest_s": float(source_time) + time_from_rest_at_start_s(src_meta),
             "oil_volume_m3": oil_after, "oil_volume_of_the_level_m3": oil_before, "oil_volume_change": change}
 
 
@@ -423,13 +448,16 @@ class _SteadyMonitor:
     the loss torque at the shaft (every body, :func:`loss_torque_series`) over three windows of
     ``window_s``; steady when the change still to come, extrapolated from them
     (:func:`~kegel.cfd_cases.steady.steady_drift`), and the last window-to-window change are both
-    within the tolerance. The result is then the mean over the last window.
+    within the tolerance, and not before ``min_time_s`` (the run's own simulated time; see
+    :data:`STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST`). The result is then the mean over the last window.
     """
 
     BODIES = ("inner_ring", "outer_ring", "cage")
 
-    def __init__(self, case: Path, flooded: bool, window_s: float, tol: float, meta: dict | None = None):
+    def __init__(self, case: Path, flooded: bool, window_s: float, tol: float, meta: dict | None = None,
+                 min_time_s: float = 0.0):
         self.case, self.flooded, self.window_s, self.tol, self.meta = case, flooded, window_s, tol, meta
+        self.min_time_s = min_time_s  # oil bath: no steady verdict before this (own simulated time)
         self.last_check = 0.0
         self.every_s = 3.0 if flooded else 15.0  # the oil bath reads every body's forces
         self.window: tuple[float, float] | None = None
@@ -444,6 +472,8 @@ class _SteadyMonitor:
                 return self._flooded()
             t, loss = loss_torque_series(self.case, self.meta)
         except FoamError:
+            return False
+        if len(t) == 0 or t[-1] < self.min_time_s:
             return False
         d = steady_drift(t, loss, self.window_s)
         if d is None:
@@ -508,7 +538,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     kin = meta["kinematics"]
     solver = "simpleFoam" if point.flooded else "interFoam"
     window = steady_window_s(kin["cage_rad_s"])
-    monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta)
+    min_time = max(0.0, steady_min_time_s(kin["cage_rad_s"]) - time_from_rest_at_start_s(meta))
+    monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta, min_time_s=min_time)
     end = float(controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
     t0 = time.monotonic()
@@ -569,11 +600,13 @@ def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
 
 def _drift_json(case: Path, meta: dict, window_s: float) -> dict[str, Any]:
     """How far the oil bath's loss torque is from its steady value (see kegel.cfd_cases.steady)."""
+    rest = {"window_s": window_s, "time_from_rest_at_start_s": time_from_rest_at_start_s(meta),
+            "min_time_from_rest_s": steady_min_time_s(meta["kinematics"]["cage_rad_s"])}
     d = steady_drift(*loss_torque_series(case, meta), window_s)
     if d is None:
-        return {"window_s": window_s, "note": "run shorter than three windows: no estimate"}
+        return {**rest, "note": "run shorter than three windows: no estimate"}
     finite = math.isfinite(d.remaining)
-    return {"window_s": window_s, "window_means_Nm": list(d.means),
+    return {**rest, "window_means_Nm": list(d.means),
             "estimated_steady_Nm": d.estimate if finite else None,
             "remaining_change_Nm": d.remaining if finite else None,
             "note": "extrapolated from three window means" if finite else

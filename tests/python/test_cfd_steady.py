@@ -90,3 +90,45 @@ def test_force_series_of_a_resumed_run_replace_what_followed_the_restart_time(tm
     assert np.all(f.moment_total[f.time <= 0.49, 2] == 1.0)
     assert np.all(f.moment_total[f.time >= 0.5, 2] == 2.0)
     assert f.time[-1] == pytest.approx(0.994)
+
+
+def _fake_oil_bath(tmp_path, t_end: float):
+    """A case folder with force series whose loss torque falls to a false plateau of 1.0 N m,
+    holds it, then rises to 1.3 N m as in the 32208 start-up (inner ring 10 rad/s, cage 4 rad/s:
+    windows of half a cage revolution, 0.785 s, and 3 cage revolutions, 4.71 s, from rest)."""
+    t = np.arange(0.005, t_end, 0.005)
+    loss = 1.0 + 2.0 * np.exp(-t / 0.05) + 0.3 * np.clip((t - 3.2) / 0.8, 0.0, 1.0)
+    root = tmp_path / "postProcessing"
+    for name, moment in (("inner_ring", -loss), ("shaft", 0 * loss), ("cage", 0 * loss)):
+        folder = root / f"forces_{name}" / "0"
+        folder.mkdir(parents=True)
+        rows = "".join(f"{a:.10g} (0 0 0) (0 0 0) (0 0 0)\n" for a in t)
+        (folder / "force.dat").write_text("# Time total pressure viscous\n" + rows)
+        rows = "".join(f"{a:.10g} (0 0 {m:.10g}) (0 0 0) (0 0 {m:.10g})\n" for a, m in zip(t, moment))
+        (folder / "moment.dat").write_text("# Time total pressure viscous\n" + rows)
+    return {"kinematics": {"inner_ring_rad_s": 10.0, "cage_rad_s": 4.0, "roller_spin_rad_s": 0.0}, "rollers": []}
+
+
+@pytest.mark.parametrize("t_end, min_time, steady", [(2.6, 0.0, True), (2.6, "rest", False), (7.0, "rest", True)])
+def test_a_false_plateau_early_in_the_start_up_does_not_stop_the_run(tmp_path, t_end, min_time, steady):
+    from kegel.cfd_cases.run import _SteadyMonitor, steady_min_time_s, steady_window_s
+
+    meta = _fake_oil_bath(tmp_path, t_end)
+    window = steady_window_s(4.0)
+    assert window == pytest.approx(math.pi / 4.0) and steady_min_time_s(4.0) == pytest.approx(6 * math.pi / 4.0)
+    m = _SteadyMonitor(tmp_path, False, window, 0.02, meta,
+                       min_time_s=steady_min_time_s(4.0) if min_time == "rest" else min_time)
+    m.every_s = 0.0
+    assert m(None) is steady
+    if steady:  # the mean of the last window: the plateau, or the level after the rise
+        assert m.window[1] == pytest.approx(t_end, abs=0.01)
+
+
+def test_time_from_rest_counts_the_runs_a_case_was_started_from():
+    from kegel.cfd_cases.run import time_from_rest_at_start_s
+
+    assert time_from_rest_at_start_s({"initial_state": None}) == 0.0
+    assert time_from_rest_at_start_s({}) == 0.0
+    # a case made before time_from_rest_s was recorded: its source's time
+    assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.21}}) == 0.21
+    assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.11, "time_from_rest_s": 0.32}}) == 0.32
