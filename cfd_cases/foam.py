@@ -304,6 +304,7 @@ def run_solver(
     tail: list[str] = []
     t0 = time.monotonic()
     last_step = (t0, 0.0)
+    first_step: tuple[float, float] | None = None
     reason: str | None = None
     fatal_at: int | None = None
     stopped = False
@@ -330,11 +331,13 @@ def run_solver(
                     reason = f"Courant number {state.courant_max:g} above {max_courant:g}"
                 if reason is not None:
                     break
-                if state.steps != step_before and state.steps > 1:
+                if state.steps != step_before and first_step is None:
+                    first_step = (time.monotonic(), state.time)  # a resumed run starts at its latest time
+                elif state.steps != step_before:
                     now = time.monotonic()
                     eta = math.nan
                     if end_time is not None and state.time > last_step[1]:
-                        rate = (state.time - 0.0) / max(now - t0, 1e-9)
+                        rate = (state.time - first_step[1]) / max(now - first_step[0], 1e-9)
                         eta = (end_time - state.time) / rate if rate > 0 else math.nan
                     last_step = (now, state.time)
                     if progress is not None:

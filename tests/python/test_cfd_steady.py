@@ -132,3 +132,23 @@ def test_time_from_rest_counts_the_runs_a_case_was_started_from():
     # a case made before time_from_rest_s was recorded: its source's time
     assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.21}}) == 0.21
     assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.11, "time_from_rest_s": 0.32}}) == 0.32
+
+
+def test_eta_of_a_resumed_run_counts_from_where_it_resumed(tmp_path, monkeypatch):
+    """A run resumed at t = 10 that advances 0.1 per step, 20 steps per second, to an end time
+    of 11: 0.2 s to go at t = 10.6. (Counting from t = 0, the ETA was a hundredth of that.)"""
+    from kegel.cfd_cases.foam import run_solver
+
+    bindir = tmp_path / "bin"
+    bindir.mkdir()
+    exe = bindir / "interFoam"
+    exe.write_text("#!/bin/sh\nfor i in $(seq 1 6); do\n  echo \"Time = 10.$i\"\n  sleep 0.05\ndone\necho End\n")
+    exe.chmod(0o755)
+    monkeypatch.setenv("KEGEL_OPENFOAM_BIN", str(bindir))
+    case = tmp_path / "case"
+    case.mkdir()
+    seen: list[tuple[float, float]] = []
+    run_solver(case, "interFoam", n_procs=1, end_time=11.0, progress=lambda st, eta: seen.append((st.time, eta)))
+    assert [t for t, _ in seen] == pytest.approx([10.2, 10.3, 10.4, 10.5, 10.6])
+    t, eta = seen[-1]
+    assert eta == pytest.approx((11.0 - t) / 2.0, rel=0.5)  # 0.1 per 0.05 s: 2 per second
