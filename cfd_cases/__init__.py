@@ -6,6 +6,7 @@ Mapped into the import package as ``kegel.cfd_cases``.
 from .checks import RotationCheck, rotation_check
 from .foam import (
     FoamDivergenceError,
+    FoamInterrupted,
     FoamError,
     FoamRunError,
     FoamSetupError,
@@ -17,6 +18,7 @@ from .template import render_case
 
 __all__ = [
     "FoamDivergenceError",
+    "FoamInterrupted",
     "FoamError",
     "FoamRunError",
     "FoamSetupError",

@@ -27,6 +27,7 @@ __all__ = [
     "FoamSetupError",
     "FoamRunError",
     "FoamDivergenceError",
+    "FoamInterrupted",
     "LogState",
     "RunSummary",
     "SOLVERS",
@@ -78,6 +79,10 @@ class FoamRunError(FoamError):
 
 class FoamDivergenceError(FoamRunError):
     """A solver diverged (NaN, Courant number explosion, floating point exception)."""
+
+
+class FoamInterrupted(FoamRunError):
+    """The run was interrupted (Ctrl-C); the case resumes from its latest written time."""
 
 
 def solver_dir() -> Path:
@@ -309,6 +314,7 @@ def run_solver(
     fatal_at: int | None = None
     stopped = False
     stop_requested = 0.0
+    interrupted: str | None = None
     with open(log_path, "a") as log, subprocess.Popen(
         cmd, env=foam_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         bufsize=1, start_new_session=True,
@@ -354,11 +360,20 @@ def run_solver(
                 if time.monotonic() - t0 > timeout_s:
                     reason = f"timeout after {timeout_s:.0f} s"
                     break
+        except KeyboardInterrupt:
+            # The solver runs in its own session and does not see the terminal's Ctrl-C.
+            interrupted = _stop_on_interrupt(proc, case, log)
         finally:
-            if reason is not None:
+            if reason is not None or interrupted not in (None, "written"):
                 _kill(proc)
             proc.wait()
     wall = time.monotonic() - t0
+    if interrupted is not None:
+        how = ("it wrote its state at the time above" if interrupted == "written"
+               else f"it was killed ({interrupted}); its latest written time stands")
+        raise FoamInterrupted(
+            f"{application} interrupted at t = {state.time:g} s (step {state.steps}): {how}; "
+            "the same command resumes the run", case, application, log_path, _excerpt(tail, 10))
     if reason is not None:
         raise FoamDivergenceError(
             f"{application} diverged at t = {state.time:g} s (step {state.steps}): {reason}",
@@ -375,6 +390,28 @@ def run_solver(
             _excerpt(tail, 40),
         )
     return RunSummary(application, case, log_path, n_procs, wall, state, stopped)
+
+
+def _stop_on_interrupt(proc: subprocess.Popen, case: Path, log, grace_s: float = 60.0) -> str:
+    """Ctrl-C during a run: ask the solver to write its state and stop (``stopAt writeNow``),
+    reading its output meanwhile (a full pipe would block it). Returns ``"written"`` when it
+    stopped by itself, else why it has to be killed (no stop within ``grace_s``, a second Ctrl-C)."""
+    asked = time.monotonic()
+    deadline = asked + grace_s
+    _request_write_now(case)
+    try:
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            log.write(line)
+            now = time.monotonic()
+            if now > deadline:
+                return f"no stop within {grace_s:.0f} s"
+            if now - asked > 15.0:  # see the fileModificationSkew note in run_solver
+                asked = now
+                _request_write_now(case)
+    except KeyboardInterrupt:
+        return "a second Ctrl-C"
+    return "written"
 
 
 def _kill(proc: subprocess.Popen) -> None:

@@ -414,11 +414,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KegelInputError as exc:
         print(f"kegel: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("kegel: interrupted", file=sys.stderr)
+        return 130
     except RuntimeError as exc:
-        from .cfd_cases.foam import FoamError
+        from .cfd_cases.foam import FoamError, FoamInterrupted
 
         if not isinstance(exc, FoamError):
             raise
+        if isinstance(exc, FoamInterrupted):
+            print(f"kegel: {str(exc).splitlines()[0]}\n  case: {exc.case}", file=sys.stderr)
+            return 130
         print(f"kegel: OpenFOAM error: {exc}", file=sys.stderr)
         return 1
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import time
 
 import numpy as np
 import pytest
@@ -134,19 +135,56 @@ def test_time_from_rest_counts_the_runs_a_case_was_started_from():
     assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.11, "time_from_rest_s": 0.32}}) == 0.32
 
 
+def _stand_in_solver(tmp_path, monkeypatch, body: str) -> Path:
+    bindir = tmp_path / "bin"
+    bindir.mkdir()
+    exe = bindir / "interFoam"
+    exe.write_text("#!/bin/sh\n" + body)
+    exe.chmod(0o755)
+    monkeypatch.setenv("KEGEL_OPENFOAM_BIN", str(bindir))
+    case = tmp_path / "case"
+    (case / "system").mkdir(parents=True)
+    (case / "system" / "controlDict").write_text("stopAt          endTime;\nendTime         100;\n")
+    return case
+
+
+#: Steps forever; writes "written" and stops once controlDict says writeNow (as runTimeModifiable does).
+_OBEDIENT = ("i=0\nwhile true; do\n  i=$((i+1))\n  echo \"Time = $i\"\n"
+             "  if grep -q writeNow \"$2/system/controlDict\"; then touch \"$2/written\"; echo End; exit 0; fi\n"
+             "  sleep 0.05\ndone\n")
+
+
+@pytest.mark.parametrize("obedient", [True, False])
+def test_ctrl_c_stops_the_solver_and_says_how_to_resume(tmp_path, monkeypatch, obedient):
+    """Ctrl-C reaches only kegel (the solver has its own session): kegel asks the solver to write
+    and stop, and kills it when it does not within the grace time."""
+    import kegel.cfd_cases.foam as foam
+
+    body = _OBEDIENT if obedient else _OBEDIENT.replace("grep -q writeNow", "false")
+    case = _stand_in_solver(tmp_path, monkeypatch, body)
+    monkeypatch.setattr(foam, "_stop_on_interrupt",
+                        lambda proc, case, log, grace_s=1.0, f=foam._stop_on_interrupt: f(proc, case, log, grace_s))
+
+    def ctrl_c(st, eta):
+        if st.steps >= 3:
+            raise KeyboardInterrupt
+
+    t0 = time.monotonic()
+    with pytest.raises(foam.FoamInterrupted, match="resumes the run") as err:
+        foam.run_solver(case, "interFoam", n_procs=1, end_time=100.0, progress=ctrl_c)
+    assert time.monotonic() - t0 < 10.0
+    assert "stopAt          writeNow;" in (case / "system" / "controlDict").read_text()
+    assert (case / "written").exists() is obedient
+    assert ("wrote its state" in str(err.value)) is obedient
+
+
 def test_eta_of_a_resumed_run_counts_from_where_it_resumed(tmp_path, monkeypatch):
     """A run resumed at t = 10 that advances 0.1 per step, 20 steps per second, to an end time
     of 11: 0.2 s to go at t = 10.6. (Counting from t = 0, the ETA was a hundredth of that.)"""
     from kegel.cfd_cases.foam import run_solver
 
-    bindir = tmp_path / "bin"
-    bindir.mkdir()
-    exe = bindir / "interFoam"
-    exe.write_text("#!/bin/sh\nfor i in $(seq 1 6); do\n  echo \"Time = 10.$i\"\n  sleep 0.05\ndone\necho End\n")
-    exe.chmod(0o755)
-    monkeypatch.setenv("KEGEL_OPENFOAM_BIN", str(bindir))
-    case = tmp_path / "case"
-    case.mkdir()
+    case = _stand_in_solver(tmp_path, monkeypatch,
+                            "for i in $(seq 1 6); do\n  echo \"Time = 10.$i\"\n  sleep 0.05\ndone\necho End\n")
     seen: list[tuple[float, float]] = []
     run_solver(case, "interFoam", n_procs=1, end_time=11.0, progress=lambda st, eta: seen.append((st.time, eta)))
     assert [t for t, _ in seen] == pytest.approx([10.2, 10.3, 10.4, 10.5, 10.6])
