@@ -12,8 +12,9 @@ the first setting (the smallest limit given: the finest fidelity of the comparis
 Each argument is ``max_courant/max_interface_courant``. Cases go to ``DIR/co_<a>_<b>`` (default: a
 temporary folder, removed afterwards); a case there that already holds a steady ``results.json``
 of the same point is reported as it is (so a run of ``kegel cfd run ... --output DIR/co_5_1``
-counts). Not part of ``make bench``: about 11 min at 10/3 and 30 min at 5/1 on 2 cores. Output:
-benchmarks/results/cfd_oil_bath_steady.json.
+counts). Not part of ``make bench``: 13 min at 10/3 on 2 cores (steady after 0.308 s, measured
+once) and, by the start-up benchmark's step counts, about three times that at 5/1 (an estimate;
+not yet run to the end). Output: benchmarks/results/cfd_oil_bath_steady.json.
 """
 
 from __future__ import annotations
