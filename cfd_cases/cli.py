@@ -54,6 +54,7 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         if not (math.isfinite(co) and co > 0.0):
             raise KegelInputError(src, key, co, "a positive Courant number")
         extra[name] = co
+    init = getattr(args, "initial_from", None)
     start = getattr(args, "start_on", None)
     if start:  # see _start_run
         levels = list(MESH_LEVELS)
@@ -61,9 +62,8 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
             raise KegelInputError(src, "--start-on", start, f"one of {', '.join(MESH_LEVELS)}")
         if levels.index(start) >= levels.index(args.mesh):
             raise KegelInputError(src, "--start-on", start, f"a mesh level coarser than --mesh {args.mesh}")
-        if getattr(args, "initial_from", None):
+        if init:
             raise KegelInputError(src, "--start-on", start, "either --start-on or --initial-from, not both")
-    init = getattr(args, "initial_from", None)
     if init:
         if level is None:
             raise KegelInputError(src, "--initial-from", init, "an oil-bath point (a flooded run starts from rest)")
