@@ -47,6 +47,17 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         if wall <= 0:
             raise KegelInputError(src, "--max-wall-time", args.max_wall_time, "a positive time")
     extra: dict[str, Any] = {}
+    tol_text = getattr(args, "steady_tolerance", None)
+    if tol_text is not None:
+        try:
+            text = tol_text.strip()
+            tol = float(text[:-1]) / 100.0 if text.endswith("%") else float(text)
+        except ValueError:
+            tol = math.nan
+        if not (math.isfinite(tol) and 0.0 <= tol < 1.0):
+            raise KegelInputError(src, "--steady-tolerance", tol_text,
+                                  'a fraction from 0 to below 1, e.g. 0.02 or "2 %" (0: no steady stop)')
+        extra["steady_tolerance"] = tol
     for key, name in (("--max-courant", "max_courant"), ("--max-interface-courant", "max_interface_courant")):
         co = getattr(args, name, None)
         if co is None:
@@ -322,6 +333,9 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--start-on", metavar="MESH",
                         help="oil bath: run the point on this coarser mesh first (to a steady loss torque) "
                              "and start --mesh from its last state; e.g. --mesh small --start-on tiny")
+        sp.add_argument("--steady-tolerance",
+                        help='relative tolerance of the steady-torque stop, e.g. 0.02 or "2 %%" (default 0.02); '
+                             "0 runs to --end-time (oil bath) or --max-iterations (flooded)")
         sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")

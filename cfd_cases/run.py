@@ -50,7 +50,7 @@ from .foam import (FoamError, LogState, controldict_value, read_boundary_geometr
 from .forces import read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
-from .steady import steady_drift
+from .steady import SteadyTest, steady_drift
 from .template import render_case
 
 __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
@@ -81,7 +81,9 @@ class CfdPoint:
     housing_clearance_m: float | None = None
     end_time_s: float | None = None        # oil bath: simulated time limit (default: 20 shaft revolutions)
     max_iterations: int = 2000            # flooded: SIMPLE iteration limit
-    steady_tolerance: float = 0.02         # relative change of the windowed mean torque
+    # Relative tolerance of the steady test (see _SteadyMonitor); 0 never stops on it (the run
+    # goes to end_time_s / max_iterations), e.g. for a reference run.
+    steady_tolerance: float = 0.02
     max_wall_time_s: float | None = None   # stop (and write) when the run takes longer than this
     max_courant: float = 5.0               # oil bath: time step limit (Courant number, oil-filled gaps)
     max_interface_courant: float = 1.0     # oil bath: time step limit at the free surface
@@ -104,6 +106,9 @@ class CfdPoint:
             raise ValueError("speed = 0: expected a turning shaft")
         if not (isinstance(self.force_sample_steps, int) and self.force_sample_steps >= 1):
             raise ValueError(f"force_sample_steps = {self.force_sample_steps!r}: expected a whole number of at least 1")
+        if not (math.isfinite(self.steady_tolerance) and 0.0 <= self.steady_tolerance < 1.0):
+            raise ValueError(f"steady_tolerance = {self.steady_tolerance}: expected a fraction in [0, 1) "
+                             "(0: no steady stop)")
         for name in ("max_courant", "max_interface_courant"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0.0):
@@ -181,6 +186,11 @@ def steady_window_s(cage_rad_s: float) -> float:
 #: Three cage revolutions put the steady test's three windows after the plateau's start. This
 #: is taken from one case's start-up; other speeds and levels may need more (see the README).
 STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST = 3.0
+
+
+#: Oil bath: the steady test must pass at every check point over this many windows before the
+#: run stops (see kegel.cfd_cases.steady.SteadyTest); 0 stops on the first pass.
+STEADY_HOLD_WINDOWS = 0.0
 
 
 def steady_min_time_s(cage_rad_s: float) -> float:
@@ -450,21 +460,40 @@ class _SteadyMonitor:
     (:func:`~kegel.cfd_cases.steady.steady_drift`), and the last window-to-window change are both
     within the tolerance, and not before ``min_time_s`` (the run's own simulated time; see
     :data:`STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST`). The result is then the mean over the last window.
+
+    The force files are read every few seconds of wall time, but the test is applied at fixed
+    points of the run (every :attr:`CHECK_ITERATIONS` iterations, every ``window_s /``
+    :attr:`CHECK_PER_WINDOW` of simulated time) to the series up to that point, each point once
+    (:func:`~kegel.cfd_cases.steady.first_steady_time`). Where a run stops, and what it reports,
+    therefore does not depend on how fast the machine is or what else runs on it.
     """
 
     BODIES = ("inner_ring", "outer_ring", "cage")
+    CHECK_ITERATIONS = 10
+    CHECK_PER_WINDOW = 20
 
     def __init__(self, case: Path, flooded: bool, window_s: float, tol: float, meta: dict | None = None,
-                 min_time_s: float = 0.0):
+                 min_time_s: float = 0.0, hold_s: float = 0.0):
         self.case, self.flooded, self.window_s, self.tol, self.meta = case, flooded, window_s, tol, meta
         self.min_time_s = min_time_s  # oil bath: no steady verdict before this (own simulated time)
         self.last_check = 0.0
         self.every_s = 3.0 if flooded else 15.0  # the oil bath reads every body's forces
+        self.step = float(self.CHECK_ITERATIONS) if flooded else window_s / self.CHECK_PER_WINDOW
+        self.checked_until = -math.inf  # the test has been applied at the check points up to here
+        self.test = SteadyTest(window_s, tol, min_time=min_time_s, hold=hold_s)
         self.window: tuple[float, float] | None = None
+
+    def _check_points(self, t_end: float, t_min: float) -> np.ndarray:
+        """The check points in (checked_until, t_end] from t_min on (multiples of the step)."""
+        lo = max(self.checked_until, t_min - 1e-12 * abs(t_min))
+        k0 = math.floor(lo / self.step) + 1
+        k1 = math.floor(t_end / self.step * (1 + 1e-12))
+        self.checked_until = max(self.checked_until, t_end)
+        return self.step * np.arange(k0, k1 + 1, dtype=float) if k1 >= k0 else np.empty(0)
 
     def __call__(self, st: LogState) -> bool:
         now = time.monotonic()
-        if now - self.last_check < self.every_s:
+        if self.tol <= 0.0 or now - self.last_check < self.every_s:  # tol 0: run to the end
             return False
         self.last_check = now
         try:
@@ -473,30 +502,33 @@ class _SteadyMonitor:
             t, loss = loss_torque_series(self.case, self.meta)
         except FoamError:
             return False
-        if len(t) == 0 or t[-1] < self.min_time_s:
+        if len(t) == 0:
             return False
-        d = steady_drift(t, loss, self.window_s)
-        if d is None:
+        ts = self.test.update(t, loss, self._check_points(float(t[-1]), self.min_time_s))
+        if ts is None:
             return False
-        if d.steady(self.tol, abs(d.estimate)):
-            self.window = (float(t[-1] - self.window_s), float(t[-1]))
-            return True
-        return False
+        self.window = (ts - self.window_s, ts)
+        return True
 
     def _flooded(self) -> bool:
         series = {b: read_forces(self.case, f"forces_{b}") for b in self.BODIES}
-        f = series["inner_ring"]
-        t, m = f.time, f.moment_total[:, 2]
-        if len(t) < 20 or t[-1] < 200:
+        t = series["inner_ring"].time
+        if len(t) == 0:
             return False
-        k = max(int(0.2 * len(t)), 40)
-        scale = max(abs(float(m[-k:].mean())), 1e-300)
-        for b in self.BODIES:
-            seg = series[b].moment_total[-k:, 2]
-            if (seg.max() - seg.min()) > 0.25 * self.tol * scale:
-                return False
-        self.window = (float(t[-k]), float(t[-1]))
-        return True
+        for n in self._check_points(float(t[-1]), 200.0):
+            upto = int(np.searchsorted(t, n, side="right"))
+            if upto < 20:
+                continue
+            k = max(int(0.2 * upto), 40)
+            if k > upto:
+                continue
+            m = series["inner_ring"].moment_total[upto - k:upto, 2]
+            scale = max(abs(float(m.mean())), 1e-300)
+            if all(np.ptp(series[b].moment_total[upto - k:upto, 2]) <= 0.25 * self.tol * scale
+                   for b in self.BODIES):
+                self.window = (float(t[upto - k]), float(t[upto - 1]))
+                return True
+        return False
 
 
 def _turning_walls(kin: dict[str, float]) -> dict[str, float]:
@@ -539,7 +571,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     solver = "simpleFoam" if point.flooded else "interFoam"
     window = steady_window_s(kin["cage_rad_s"])
     min_time = max(0.0, steady_min_time_s(kin["cage_rad_s"]) - time_from_rest_at_start_s(meta))
-    monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta, min_time_s=min_time)
+    monitor = _SteadyMonitor(case, point.flooded, window, point.steady_tolerance, meta, min_time_s=min_time,
+                             hold_s=STEADY_HOLD_WINDOWS * window)
     end = float(controldict_value(case, "endTime"))
     log(f"cfd: running {solver} on {point.n_procs} core(s) in {case}")
     t0 = time.monotonic()
@@ -569,7 +602,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     result.runtime_s = runtime + meta.get("runtime_before_s", 0.0)
     meta["runtime_before_s"] = result.runtime_s
     (case / "kegel-case.json").write_text(json.dumps(meta, indent=2))
-    fidelity = {"mesh": point.mesh, "cells": result.cells, "solver": solver, "n_procs": point.n_procs}
+    fidelity = {"mesh": point.mesh, "cells": result.cells, "solver": solver, "n_procs": point.n_procs,
+                "steady_tolerance": point.steady_tolerance}
     if not point.flooded:
         fidelity.update(max_courant=point.max_courant, max_interface_courant=point.max_interface_courant,
                         initial_state=meta.get("initial_state"))
@@ -582,7 +616,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
            "angular_momentum_balance": _balance(result.torques_Nm),
-           **({} if point.flooded else {"loss_torque_drift": _drift_json(case, meta, window)}),
+           **({} if point.flooded else {"loss_torque_drift": _drift_json(
+               case, meta, window, until=monitor.window[1] if monitor.window is not None else None)}),
            "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
@@ -598,11 +633,17 @@ def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
     return {"sum_of_wall_torques_Nm": total, "relative_to_drive_torque": total / drive if drive else float("nan")}
 
 
-def _drift_json(case: Path, meta: dict, window_s: float) -> dict[str, Any]:
-    """How far the oil bath's loss torque is from its steady value (see kegel.cfd_cases.steady)."""
+def _drift_json(case: Path, meta: dict, window_s: float, until: float | None = None) -> dict[str, Any]:
+    """How far the oil bath's loss torque is from its steady value (see kegel.cfd_cases.steady),
+    from the series up to ``until`` (the point the steady test passed at; default: the end)."""
     rest = {"window_s": window_s, "time_from_rest_at_start_s": time_from_rest_at_start_s(meta),
             "min_time_from_rest_s": steady_min_time_s(meta["kinematics"]["cage_rad_s"])}
-    d = steady_drift(*loss_torque_series(case, meta), window_s)
+    t, loss = loss_torque_series(case, meta)
+    if until is not None:
+        rest["until_s"] = until
+        keep = t <= until * (1 + 1e-12)
+        t, loss = t[keep], loss[keep]
+    d = steady_drift(t, loss, window_s)
     if d is None:
         return {**rest, "note": "run shorter than three windows: no estimate"}
     finite = math.isfinite(d.remaining)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SteadyDrift", "window_means", "steady_drift"]
+__all__ = ["SteadyDrift", "SteadyTest", "window_means", "steady_drift", "first_steady_time"]
 
 
 @dataclass(frozen=True)
@@ -40,9 +40,9 @@ class SteadyDrift:
 
     def steady(self, tol: float, scale: float) -> bool:
         """Whether the remaining change and the last window-to-window change are both within
-        ``tol * scale``."""
+        ``tol * scale``; never for ``tol`` = 0 (a run that is not to stop on it)."""
         d2 = self.means[2] - self.means[1]
-        return abs(self.remaining) <= tol * scale and abs(d2) <= tol * scale
+        return tol > 0.0 and abs(self.remaining) <= tol * scale and abs(d2) <= tol * scale
 
 
 def window_means(t: np.ndarray, y: np.ndarray, window: float, n: int = 3) -> np.ndarray | None:
@@ -79,3 +79,48 @@ def steady_drift(t: np.ndarray, y: np.ndarray, window: float) -> SteadyDrift | N
     t_end = float(t[-1])
     return SteadyDrift(means=(float(m[0]), float(m[1]), float(m[2])), estimate=estimate,
                        remaining=float(remaining), window=(t_end - 3 * window, t_end))
+
+
+@dataclass
+class SteadyTest:
+    """The steady test applied at check points, in pieces as a series grows.
+
+    At each check point from ``min_time`` on the series up to then must pass
+    :meth:`SteadyDrift.steady` (``tol`` relative to the estimate); the test is passed when it has
+    passed at every check point over the last ``hold`` of time. ``hold`` = 0 takes the first pass.
+    A test that must hold over a span does not stop on a brief pass, which a slow swing of the
+    series can give (window means that happen to look like a geometric approach).
+    """
+
+    window: float
+    tol: float
+    min_time: float = 0.0
+    hold: float = 0.0
+    since: float | None = None  # first check point of the current run of passes
+
+    def update(self, t: np.ndarray, y: np.ndarray, check_times: np.ndarray) -> float | None:
+        """Apply the test at ``check_times`` (increasing, after those of earlier calls) to the
+        series ``t, y`` up to each; return the last sample time up to the check point at which
+        the test is passed, or None."""
+        t = np.asarray(t, dtype=float)
+        y = np.asarray(y, dtype=float)
+        checks = np.asarray(check_times, dtype=float)
+        for tc in checks[checks >= self.min_time]:
+            k = int(np.searchsorted(t, tc, side="right"))
+            d = steady_drift(t[:k], y[:k], self.window)
+            if d is None or not d.steady(self.tol, abs(d.estimate)):
+                self.since = None
+                continue
+            self.since = tc if self.since is None else self.since
+            if tc - self.since >= self.hold * (1 - 1e-9):
+                return float(t[k - 1])
+        return None
+
+
+def first_steady_time(t: np.ndarray, y: np.ndarray, window: float, tol: float, *,
+                      min_time: float = 0.0, check_times: np.ndarray | None = None,
+                      hold: float = 0.0) -> float | None:
+    """Replay :class:`SteadyTest` on a recorded series at ``check_times`` (default: every sample
+    time): the last sample time up to the check point at which it is passed, or None."""
+    test = SteadyTest(window, tol, min_time=min_time, hold=hold)
+    return test.update(t, y, np.asarray(t, dtype=float) if check_times is None else check_times)

@@ -115,6 +115,19 @@ def test_cfd_run_rejects_bad_input():
     assert "tiny, small, fine" in _bad("--start-on", "huge", "--mesh", "small", level="shaft_center")
     assert "not both" in _bad("--start-on", "tiny", "--mesh", "small", "--initial-from", "/nonexistent",
                               level="shaft_center")
+    for tol in ("1", "-0.1", "150 %", "nan", "two percent"):
+        err = _bad("--steady-tolerance", tol, level="shaft_center")
+        assert "--steady-tolerance" in err and repr(tol) in err and "fraction" in err
+
+
+def test_cfd_point_steady_tolerance_is_a_fraction():
+    ok = CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=0.04,
+                  steady_tolerance=0.0)
+    ok.validate()  # 0: no steady stop (a reference run to the end time)
+    for bad in (-0.01, 1.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="steady_tolerance"):
+            CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=0.04,
+                     steady_tolerance=bad).validate()
 
 
 SPEED = 2000 * math.pi / 30
@@ -138,6 +151,7 @@ def test_tiny_flooded_case_runs_and_resumes(tmp_path):
     assert t["outer_ring"]["total"] > 0  # and drags the fixed outer ring along
     assert data["power_loss_W"] > 0 and res.loss_torque_at_shaft_Nm > 0
     assert data["provenance"]["kegel_version"] and data["fidelity"]["mesh"] == "tiny"
+    assert data["fidelity"]["steady_tolerance"] == 0.02
     assert len(data["rollers"]) == 17 and _finite([r["force_N"] for r in data["rollers"]])
     assert data["iterations"] == pytest.approx(40)
     # resume with more iterations: continues from iteration 40

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import math
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from kegel.cfd_cases.steady import steady_drift, window_means
+from kegel.cfd_cases.steady import first_steady_time, steady_drift, window_means
 
 
 def _uneven_times(t_end: float, n: int = 4000, seed: int = 1) -> np.ndarray:
@@ -72,6 +73,26 @@ def test_fluctuations_about_a_level_are_steady_when_small():
     assert not d.steady(0.02, 20.0)
 
 
+def test_replayed_steady_test_stops_where_the_monitor_would():
+    # y = 5 + 2 exp(-t / tau): the first sample time at which the three-window test passes
+    tau, w = 0.7, 0.5
+    t = _uneven_times(8.0)
+    y = 5.0 + 2.0 * np.exp(-t / tau)
+    ts = first_steady_time(t, y, w, 0.02)
+    assert ts is not None and 1.5 < ts < 8.0
+    k = np.searchsorted(t, ts)
+    assert steady_drift(t[:k + 1], y[:k + 1], w).steady(0.02, abs(steady_drift(t[:k + 1], y[:k + 1], w).estimate))
+    assert not steady_drift(t[:k], y[:k], w).steady(0.02, abs(steady_drift(t[:k], y[:k], w).estimate))
+    # no verdict before the minimum time, and only at the times checked
+    assert first_steady_time(t, y, w, 0.02, min_time=6.0) >= 6.0
+    checks = np.arange(0.0, 8.0, 1.0)
+    assert first_steady_time(t, y, w, 0.02, check_times=checks) == pytest.approx(
+        t[np.searchsorted(t, math.ceil(ts), side="right") - 1])
+    # a tolerance of 0 never stops (a reference run); a creep never does either
+    assert first_steady_time(t, y, w, 0.0) is None
+    assert first_steady_time(t, 100.0 + 0.5 * t, w, 0.02) is None
+
+
 def _write_forces(folder, times, value):
     folder.mkdir(parents=True)
     rows = "".join(f"{t:.10g} ({value} 0 {value}) (0 0 0) ({value} 0 {value})\n" for t in times)
@@ -82,7 +103,7 @@ def _write_forces(folder, times, value):
 def test_force_series_of_a_resumed_run_replace_what_followed_the_restart_time(tmp_path):
     from kegel.cfd_cases.forces import read_forces
 
-    root = tmp_path / "postProcessing" / "forces_x"
+    root = Path(tmp_path) / "postProcessing" / "forces_x"
     # the first run wrote its fields at 0.5 but went on to 0.77 before it was stopped
     _write_forces(root / "0", np.arange(0.01, 0.775, 0.01), 1.0)
     _write_forces(root / "0.5", np.arange(0.5, 1.0, 0.013), 2.0)
@@ -99,7 +120,7 @@ def _fake_oil_bath(tmp_path, t_end: float):
     windows of half a cage revolution, 0.785 s, and 3 cage revolutions, 4.71 s, from rest)."""
     t = np.arange(0.005, t_end, 0.005)
     loss = 1.0 + 2.0 * np.exp(-t / 0.05) + 0.3 * np.clip((t - 3.2) / 0.8, 0.0, 1.0)
-    root = tmp_path / "postProcessing"
+    root = Path(tmp_path) / "postProcessing"
     for name, moment in (("inner_ring", -loss), ("shaft", 0 * loss), ("cage", 0 * loss)):
         folder = root / f"forces_{name}" / "0"
         folder.mkdir(parents=True)
@@ -121,8 +142,37 @@ def test_a_false_plateau_early_in_the_start_up_does_not_stop_the_run(tmp_path, t
                        min_time_s=steady_min_time_s(4.0) if min_time == "rest" else min_time)
     m.every_s = 0.0
     assert m(None) is steady
-    if steady:  # the mean of the last window: the plateau, or the level after the rise
-        assert m.window[1] == pytest.approx(t_end, abs=0.01)
+    if steady:  # the first check point that passes, and the mean of the window before it: the
+        # plateau (no minimum time), or the level after the rise
+        lo, hi = m.window
+        assert hi - lo == pytest.approx(window)
+        assert m.min_time_s <= hi <= t_end and hi == pytest.approx(round(hi / (window / 20)) * window / 20, abs=0.006)
+        tt = np.linspace(lo, hi, 2001)
+        mean = float(np.mean(1.0 + 2.0 * np.exp(-tt / 0.05) + 0.3 * np.clip((tt - 3.2) / 0.8, 0.0, 1.0)))
+        assert mean == pytest.approx(1.0 if min_time == 0.0 else 1.3, rel=0.02)
+        # the next call looks only at check points after the ones already tested
+        assert m.checked_until == pytest.approx(t_end, abs=0.006)
+
+
+def test_where_a_run_stops_does_not_depend_on_when_the_forces_are_read(tmp_path):
+    # A monitor that reads the series now and then (a busy or a quiet machine) stops at the same
+    # check point, with the same window, as one that reads it once at the end.
+    from kegel.cfd_cases.run import _SteadyMonitor, steady_min_time_s, steady_window_s
+
+    window, t_min = steady_window_s(4.0), steady_min_time_s(4.0)
+    once = _SteadyMonitor(tmp_path / "once", False, window, 0.02, _fake_oil_bath(tmp_path / "once", 7.0),
+                          min_time_s=t_min)
+    once.every_s = 0.0
+    assert once(None)
+    for reads in ([5.0, 7.0], [4.8, 5.1, 5.3, 6.0, 7.0], [2.0, 5.2, 7.0]):
+        m = _SteadyMonitor(tmp_path, False, window, 0.02, None, min_time_s=t_min)
+        m.every_s = 0.0
+        for k, t_read in enumerate(reads):
+            m.case = tmp_path / f"{len(reads)}_{k}"
+            m.meta = _fake_oil_bath(m.case, t_read)
+            if m(None):
+                break
+        assert m.window == pytest.approx(once.window, abs=1e-12)
 
 
 def test_time_from_rest_counts_the_runs_a_case_was_started_from():

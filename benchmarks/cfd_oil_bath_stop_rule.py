@@ -1,0 +1,174 @@
+"""CFD speed against error of the oil bath's steady test: when to stop, and which mean to report.
+
+The runner stops an oil-bath run when three window means of the loss torque agree (see
+``kegel.cfd_cases.steady``) and reports the mean over the last window. Beyond the start-up the
+loss still swings slowly (period about 1.4 cage revolutions on the 32208), so where a run stops
+and what it averages decide how far its answer is from the long-time mean. This benchmark runs
+the tiny 32208 point (2000 rpm, 50 degC, oil to the shaft centre, 2 cores, Courant 10 / 3, from
+rest) without the steady stop to a long end time, takes the mean over its last
+``--reference-revolutions`` cage revolutions as the reference (the finest answer in time this
+mesh gives), and replays steady-test variants (window length, tolerance) on the recorded series.
+For each it reports, side by side: the simulated and the wall time at which the test would have
+stopped (the wall time from the solver log's clock), the loss it would have reported (mean over
+the last window, and over all three windows), and their deviations from the reference.
+
+    .venv/bin/python benchmarks/cfd_oil_bath_stop_rule.py [--work DIR] [--end-time 0.75]
+
+The reference run goes to ``DIR/reference`` (default: a temporary folder, removed afterwards); a
+run there that already reached the end time is reused. About 31 min on 2 cores for 0.75 s (the
+tiny mesh takes about 2.5 s of wall time per simulated millisecond at Courant 10 / 3). Not part of
+``make bench``. Output: benchmarks/results/cfd_oil_bath_stop_rule.json and .png.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+
+#: (window in cage revolutions, relative tolerance, hold in windows) of the variants replayed;
+#: the first is the runner's rule (kegel.cfd_cases.run: STEADY_WINDOW_CAGE_REVOLUTIONS,
+#: CfdPoint.steady_tolerance, STEADY_HOLD_WINDOWS).
+VARIANTS = [(0.5, 0.02, 0.0), (0.5, 0.02, 0.5), (0.5, 0.02, 1.0), (0.5, 0.01, 0.0), (0.5, 0.01, 1.0),
+            (1.0, 0.02, 0.0), (1.0, 0.02, 1.0)]
+
+
+def clock_of_time(case: Path) -> tuple[np.ndarray, np.ndarray]:
+    """Simulated time and the solver's wall clock (``ClockTime``) after each step, from the log."""
+    times, clocks, t = [], [], None
+    for line in (case / "log.interFoam").read_text(errors="replace").splitlines():
+        if m := re.match(r"^Time = (\S+)", line):
+            t = float(m.group(1))
+        elif (m := re.match(r"^ExecutionTime = \S+ s\s+ClockTime = (\S+) s", line)) and t is not None:
+            times.append(t)
+            clocks.append(float(m.group(1)))
+    return np.array(times), np.array(clocks)
+
+
+def _reference_run(case: Path, end_time_s: float) -> None:
+    from kegel.cfd_cases.run import CfdPoint, run_case
+    from kegel.data import load_bearing
+
+    done = case / "results.json"
+    if done.is_file() and json.loads(done.read_text())["simulated_time_s"] >= end_time_s * (1 - 1e-6):
+        return
+    p = CfdPoint(bearing="32208", speed_rad_s=2000 * math.pi / 30, temperature_K=323.15,
+                 oil_level_m=0.5 * load_bearing("32208").outer_diameter_m, mesh="tiny", n_procs=2,
+                 max_courant=10.0, max_interface_courant=3.0, end_time_s=end_time_s, steady_tolerance=0.0)
+    run_case(p, case, progress=False, log=lambda m: print(m, file=sys.stderr))
+
+
+def main(argv: list[str]) -> int:
+    from kegel.cfd_cases.run import _SteadyMonitor, loss_torque_series, steady_min_time_s
+    from kegel.cfd_cases.steady import first_steady_time, window_means
+    from kegel.io import atomic_write_json, provenance
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--work", help="folder for the reference run (kept); default: a temporary folder")
+    ap.add_argument("--end-time", type=float, default=0.75, help="simulated seconds (default 0.75)")
+    ap.add_argument("--reference-revolutions", type=float, default=3.0,
+                    help="cage revolutions at the end averaged for the reference (default 3)")
+    args = ap.parse_args(argv)
+    work = Path(args.work) if args.work else Path(tempfile.mkdtemp(prefix="kegel-stop-rule-"))
+    case = work / "reference"
+    try:
+        _reference_run(case, args.end_time)
+        meta = json.loads((case / "kegel-case.json").read_text())
+        t, loss = loss_torque_series(case, meta)
+        t_log, clock = clock_of_time(case)
+        result = json.loads((case / "results.json").read_text())
+    finally:
+        if not args.work:
+            shutil.rmtree(work, ignore_errors=True)
+    rev = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
+    span = args.reference_revolutions * rev
+    if t[-1] - t[0] < span + steady_min_time_s(meta["kinematics"]["cage_rad_s"]):
+        raise SystemExit(f"{case}: the run ends at {t[-1]:.3f} s, too short for a reference over "
+                         f"{args.reference_revolutions:g} cage revolutions after the steady test's minimum time")
+    per_rev = window_means(t, loss, rev, int(args.reference_revolutions))
+    reference = float(window_means(t, loss, span, 1)[0])
+    min_time = steady_min_time_s(meta["kinematics"]["cage_rad_s"])
+    rows = []
+    for revs, tol, hold in VARIANTS:
+        w = revs * rev
+        step = w / _SteadyMonitor.CHECK_PER_WINDOW  # the runner's check points
+        ts = first_steady_time(t, loss, w, tol, min_time=min_time, hold=hold * w,
+                               check_times=step * np.arange(1, math.floor(t[-1] / step) + 1))
+        row = {"window_cage_revolutions": revs, "window_s": w, "tolerance": tol, "hold_windows": hold,
+               "stop_time_s": ts}
+        if ts is not None:
+            k = t <= ts
+            last = float(window_means(t[k], loss[k], w, 1)[0])
+            three = float(window_means(t[k], loss[k], 3 * w, 1)[0])
+            row.update({"wall_time_s": float(np.interp(ts, t_log, clock)), "loss_last_window_Nm": last,
+                        "loss_three_windows_Nm": three, "deviation_last_window": last / reference - 1,
+                        "deviation_three_windows": three / reference - 1,
+                        "stopped_within_reference_span": bool(ts > t[-1] - span)})
+        rows.append(row)
+    out = HERE / "results"
+    out.mkdir(exist_ok=True)
+    report = {"point": "32208, 2000 rpm, 50 degC, oil to the shaft centre, tiny mesh, 2 cores, Courant 10 / 3",
+              "cells": result["fidelity"]["cells"], "end_time_s": float(t[-1]),
+              "wall_time_s": float(clock[-1]) if len(clock) else None, "cage_revolution_s": rev,
+              "reference_revolutions": args.reference_revolutions, "reference_loss_Nm": reference,
+              "reference_per_revolution_means_Nm": [float(x) for x in per_rev],
+              "min_time_from_rest_s": min_time, "rows": rows, "case": str(case),
+              "provenance": provenance()}
+    atomic_write_json(out / "cfd_oil_bath_stop_rule.json", report)
+    _plot(out / "cfd_oil_bath_stop_rule.png", t, loss, rev, reference, span, rows)
+    print(f"tiny 32208 oil bath, {result['fidelity']['cells']} cells, run to {t[-1]:.3f} s "
+          f"({report['wall_time_s'] or math.nan:.0f} s wall); reference = mean over the last "
+          f"{args.reference_revolutions:g} cage revolutions = {1e3 * reference:.2f} mN m "
+          f"(per revolution: {', '.join(f'{1e3 * x:.2f}' for x in per_rev)})")
+    print(f"{'window rev':>10}{'tol':>6}{'hold':>6}{'stop at s':>10}{'wall s':>8}{'last window':>12}{'dev':>8}"
+          f"{'3 windows':>11}{'dev':>8}")
+    for r in rows:
+        if r["stop_time_s"] is None:
+            print(f"{r['window_cage_revolutions']:>10g}{r['tolerance']:>6g}{r['hold_windows']:>6g}"
+                  "   never steady before the end")
+            continue
+        print(f"{r['window_cage_revolutions']:>10g}{r['tolerance']:>6g}{r['hold_windows']:>6g}{r['stop_time_s']:>10.3f}{r['wall_time_s']:>8.0f}"
+              f"{1e3 * r['loss_last_window_Nm']:>12.2f}{100 * r['deviation_last_window']:>+7.1f}%"
+              f"{1e3 * r['loss_three_windows_Nm']:>11.2f}{100 * r['deviation_three_windows']:>+7.1f}%")
+    return 0
+
+
+def _plot(path: Path, t, loss, rev, reference, span, rows) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    ax.plot(t, 1e3 * loss, lw=0.6, color="0.6", label="loss torque at the shaft")
+    ax.axhline(1e3 * reference, color="k", lw=1.2, label="reference (mean over the last revolutions)")
+    ax.axvspan(t[-1] - span, t[-1], color="0.9")
+    for r in rows:
+        if r["stop_time_s"] is not None:
+            ax.plot([r["stop_time_s"]], [1e3 * r["loss_last_window_Nm"]], "o",
+                    label=f"stop: window {r['window_cage_revolutions']:g} rev, tol {100 * r['tolerance']:g} %, "
+                          f"hold {r['hold_windows']:g} windows")
+    lo = np.percentile(loss[t > 0.1 * t[-1]], 1)
+    hi = np.percentile(loss[t > 0.1 * t[-1]], 99)
+    ax.set_ylim(1e3 * lo * 0.9, 1e3 * hi * 1.1)
+    ax.set_xlabel("time from rest [s]")
+    ax.set_ylabel("loss torque [mN m]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    tmp = path.with_suffix(".tmp.png")
+    fig.savefig(tmp, dpi=110)
+    tmp.replace(path)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
