@@ -88,6 +88,14 @@ def test_replayed_steady_test_stops_where_the_monitor_would():
     checks = np.arange(0.0, 8.0, 1.0)
     assert first_steady_time(t, y, w, 0.02, check_times=checks) == pytest.approx(
         t[np.searchsorted(t, math.ceil(ts), side="right") - 1])
+    # hold: the test must pass at every check point over a span; a pass that ends does not count
+    ts_hold = first_steady_time(t, y, w, 0.02, check_times=checks, hold=2.0)
+    assert ts_hold == pytest.approx(t[np.searchsorted(t, math.ceil(ts) + 2.0, side="right") - 1])
+    assert math.ceil(ts) == 3  # passes at the check points 3 and 4 s; a step at 4.5 s breaks it
+    jump = np.where(t < 4.5, y, y + 3.0)
+    assert first_steady_time(t, jump, w, 0.02, check_times=checks, hold=1.0) == pytest.approx(
+        t[np.searchsorted(t, 4.0, side="right") - 1])
+    assert first_steady_time(t, jump, w, 0.02, check_times=checks, hold=1.5) is None
     # a tolerance of 0 never stops (a reference run); a creep never does either
     assert first_steady_time(t, y, w, 0.0) is None
     assert first_steady_time(t, 100.0 + 0.5 * t, w, 0.02) is None
