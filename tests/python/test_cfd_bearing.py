@@ -138,6 +138,15 @@ def _finite(x) -> bool:
 
 
 @pytest.mark.openfoam
+def test_oil_bath_write_times_do_not_follow_the_end_time():
+    from kegel.cfd_cases.run import oil_bath_write_interval_s
+
+    rev = 2 * math.pi / SPEED
+    for end in (0.6, 0.9, 20 * rev, 7.3):
+        assert oil_bath_write_interval_s(SPEED, end) == pytest.approx(rev)
+    assert oil_bath_write_interval_s(SPEED, 1e-4) == 1e-4
+
+
 def test_tiny_flooded_case_runs_and_resumes(tmp_path):
     """Both ways of stopping: an iteration limit, then a resumed run that goes on from there."""
     case = tmp_path / "flooded"
