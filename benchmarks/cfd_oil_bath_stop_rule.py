@@ -28,10 +28,10 @@ stops at 0.226 s after 633 s and reports 22.70 mN m, -2.3 % (the mean over its t
 (three-window mean +1.0 %). A longer or stricter test costs 1.5 times the wall time here and is
 no closer to the long-time mean, which itself still moves by about 0.6 % per cage revolution at
 0.9 s: the runner keeps its rule and reads one oil-bath loss as uncertain by about 5 %.
-The trajectory depends on the end time (the solver lands its steps on the write times, a
-twentieth of the end time), so a run of the point to another end time is another realisation:
-the runner's default end time (0.6 s) gives a run that the same rule stops at 0.307 s with
-24.7 mN m, +6 % from this reference.
+That run wrote its fields every 45 ms, a twentieth of its end time (the rule until commit
+38fe3d9), and the solver lands its steps on the write times, so it is another realisation of the
+flow than a run to the default end time (0.6 s, writes every 30 ms = one shaft revolution, as all
+runs now do): the same rule stops that one at 0.307 s with 24.7 mN m, +6 % from this reference.
 """
 
 from __future__ import annotations
