@@ -28,7 +28,7 @@ larger step costs on the steepest part of the start-up (tiny, 32208, 2000 rpm: 5
 oil and its transport around the housing take tenths of a second of simulated time (0.2 s for
 the 32208 at 2000 rpm), so a fine mesh is best started from a coarse run of the same point
 (``initial_from``: the fields are mapped volume-conservatively; ``kegel cfd run --start-on tiny``
-runs both in one call: about 52 min on 2 cores for the small 32208 point at Courant 10 / 3).
+runs both in one call: 56 min on 2 cores for the small 32208 point at Courant 10 / 3).
 """
 
 from __future__ import annotations
@@ -472,8 +472,9 @@ class _SteadyMonitor:
     The force files are read every few seconds of wall time, but the test is applied at fixed
     points of the run (every :attr:`CHECK_ITERATIONS` iterations, every ``window_s /``
     :attr:`CHECK_PER_WINDOW` of simulated time) to the series up to that point, each point once
-    (:func:`~kegel.cfd_cases.steady.first_steady_time`). Where a run stops, and what it reports,
-    therefore does not depend on how fast the machine is or what else runs on it.
+    (:class:`~kegel.cfd_cases.steady.SteadyTest`). The averaging window and what a run reports
+    therefore do not depend on how fast the machine is or what else runs on it; the solver itself
+    stops at the next read after the passing point, a few milliseconds later.
     """
 
     BODIES = ("inner_ring", "outer_ring", "cage")
@@ -488,7 +489,7 @@ class _SteadyMonitor:
         self.every_s = 3.0 if flooded else 15.0  # the oil bath reads every body's forces
         self.step = float(self.CHECK_ITERATIONS) if flooded else window_s / self.CHECK_PER_WINDOW
         self.checked_until = -math.inf  # the test has been applied at the check points up to here
-        self.test = SteadyTest(window_s, tol, min_time=min_time_s, hold=hold_s)
+        self.test = SteadyTest(window_s, tol, hold=hold_s)  # check points start at min_time_s
         self.window: tuple[float, float] | None = None
 
     def _check_points(self, t_end: float, t_min: float) -> np.ndarray:
