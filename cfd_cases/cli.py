@@ -109,7 +109,8 @@ def _liebrecht(point) -> dict[str, float]:
 
 def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
     """``--start-on MESH``: run the oil-bath point on the coarser mesh first and start the
-    requested mesh from its last state (``initial_from``). The spin-up of the oil and its
+    requested mesh from its state at the steady stop (``initial_from``; the regular write before
+    the stop point, see :func:`~kegel.cfd_cases.run.mapping_source_time`). The spin-up of the oil and its
     transport around the housing (tenths of a second of simulated time) then cost the coarse
     mesh's time; the fine mesh only has to settle (three steady windows). Returns the point to
     run and a summary of the start run (``None`` when the case already exists and resumes)."""

@@ -330,8 +330,31 @@ def time_from_rest_at_start_s(meta: dict[str, Any]) -> float:
     return float(init.get("time_from_rest_s", init.get("source_time_s", 0.0)))
 
 
+def mapping_source_time(src: Path) -> tuple[str, str]:
+    """The time folder of case ``src`` that a run started from it maps, and why that one: the
+    last regular write before its steady stop (``restart_state_time_s`` in its results, see
+    :func:`_restart_state`), else its latest reconstructed time with U and alpha.oil."""
+    times = [d for d in time_dirs(src) if (d / "U").is_file() and (d / "alpha.oil").is_file() and float(d.name) > 0]
+    if not times:
+        raise FoamError(f"initial_from = {src}: no reconstructed time with U and alpha.oil after 0 "
+                        "(run it first; kegel cfd run reconstructs its last time)")
+    source_time, why = times[-1].name, "its latest time"
+    done = src / "results.json"
+    restart = json.loads(done.read_text()).get("restart_state_time_s") if done.is_file() else None
+    if restart is not None:  # a steady run: the write before its stop point (see _restart_state)
+        found = last_write_at_or_before(times, float(restart))
+        if found is not None and float(found.name) >= float(restart) * (1 - 1e-9):
+            source_time, why = found.name, "its last regular write before the steady stop"
+        else:
+            why = f"its latest time: the write before its steady stop (t = {float(restart):g} s) is gone"
+    return source_time, why
+
+
 def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) -> dict[str, Any]:
-    """Start an oil-bath case from the latest state of a run of the same point on another mesh.
+    """Start an oil-bath case from the state of a run of the same point on another mesh: its
+    latest time, or, when it stopped on a steady torque, its last regular write before the stop
+    point (``restart_state_time_s`` in its results; the same on every machine, see
+    :func:`_restart_state`).
 
     The spin-up of the oil and its transport around the housing take a few tenths of a second
     of simulated time; on a coarse mesh that costs a fraction of the fine mesh's time. The
@@ -350,18 +373,14 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     if differ:
         raise FoamError(f"initial_from = {src}: a run of another point (differs in {', '.join(differ)}); "
                         "expected the same bearing, speed, temperature, oil level and lubricant")
-    times = [d for d in time_dirs(src) if (d / "U").is_file() and (d / "alpha.oil").is_file() and float(d.name) > 0]
-    if not times:
-        raise FoamError(f"initial_from = {src}: no reconstructed time with U and alpha.oil after 0 "
-                        "(run it first; kegel cfd run reconstructs its last time)")
-    source_time = times[-1].name
+    source_time, why = mapping_source_time(src)
     fields = ("U", "alpha.oil", "p_rgh")
     originals = {f: (case / "0" / f).read_text() for f in fields}
     run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
     volume = read_field(case / "0" / "V")
     (case / "0" / "V").unlink()
     oil_before = float(read_field(case / "0" / "alpha.oil") @ volume)
-    log(f"cfd: mapping the state at t = {source_time} s of {src} onto this mesh (mapFieldsPar)")
+    log(f"cfd: mapping the state at t = {source_time} s ({why}) of {src} onto this mesh (mapFieldsPar)")
     run_utility(case, "mapFieldsPar", str(src.resolve()), "-consistent", "-sourceTime", source_time,
                 "-mapMethod", "cellVolumeWeight")
     mapped = {f: read_field(case / "0" / f) for f in fields}
@@ -373,7 +392,8 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     oil_after = float(mapped["alpha.oil"] @ volume)
     change = oil_after / oil_before - 1.0
     log(f"cfd: oil volume after mapping {oil_after:.6g} m3, {100 * change:+.3f} % against the level's")
-    return {"case": str(src.resolve()), "source_time_s": float(source_time), "source_mesh": src_point.get("mesh"),
+    return {"case": str(src.resolve()), "source_time_s": float(source_time), "source_state": why,
+            "source_mesh": src_point.get("mesh"),
             "time_from_rest_s": float(source_time) + time_from_rest_at_start_s(src_meta),
             "oil_volume_m3": oil_after, "oil_volume_of_the_level_m3": oil_before, "oil_volume_change": change}
 
@@ -474,7 +494,9 @@ class _SteadyMonitor:
     :attr:`CHECK_PER_WINDOW` of simulated time) to the series up to that point, each point once
     (:class:`~kegel.cfd_cases.steady.SteadyTest`). The averaging window and what a run reports
     therefore do not depend on how fast the machine is or what else runs on it; the solver itself
-    stops at the next read after the passing point, a few milliseconds later.
+    stops at the next read after the passing point, a few milliseconds later, so a finer run
+    started from this one maps the regular write before the passing point instead of the last
+    state (:func:`_restart_state`).
     """
 
     BODIES = ("inner_ring", "outer_ring", "cage")
@@ -602,6 +624,9 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     runtime = time.monotonic() - t0
     if point.n_procs > 1 and time_dirs(case / "processor0"):
         run_utility(case, "reconstructPar", "-latestTime")
+    restart = None
+    if not point.flooded and monitor.window is not None:
+        restart = _restart_state(case, point.n_procs, monitor.window[1])
     result = _postprocess(case, point, meta, monitor.window, window)
     result.stopped_by = ("steady torque" if monitor.window is not None else
                          "wall-time budget" if budget_hit["hit"] else "end time / iteration limit")
@@ -622,6 +647,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
            "averaging_window": list(result.window_s), "steady": result.steady,
            "stopped_by": result.stopped_by,
+           **({} if restart is None else {"restart_state_time_s": restart}),
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
            "angular_momentum_balance": _balance(result.torques_Nm),
@@ -631,6 +657,33 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
     return result
+
+
+def last_write_at_or_before(times: list[Path], t_s: float) -> Path | None:
+    """The latest of the time folders ``times`` (in time order) at or before ``t_s`` (to the
+    written precision), or ``None``."""
+    best = None
+    for d in times:
+        if float(d.name) <= t_s * (1 + 1e-9):
+            best = d
+    return best
+
+
+def _restart_state(case: Path, n_procs: int, stop_s: float) -> float | None:
+    """The state a run started from this one maps (``--start-on``, ``initial_from``): the last
+    regular write (every shaft revolution) at or before the end of the averaging window.
+
+    The solver stops at the next read of the force files after the passing check point, which
+    depends on the machine's speed and load; the regular write before that point does not (the
+    trajectories of two runs of a case are identical), so neither does the start of a finer run.
+    Reconstructed here when the run was parallel. ``None`` when there is no such write yet."""
+    src = case / "processor0" if n_procs > 1 and (case / "processor0").is_dir() else case
+    found = last_write_at_or_before([d for d in time_dirs(src) if (d / "U").is_file()], stop_s)
+    if found is None:
+        return None
+    if src != case and not (case / found.name / "U").is_file():
+        run_utility(case, "reconstructPar", "-time", found.name, log_name="reconstructPar.restart")
+    return float(found.name)
 
 
 def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
 
 import numpy as np
 import pytest
@@ -284,6 +285,15 @@ def test_start_on_runs_the_coarse_mesh_first_and_resumes_without_it(tmp_path):
     # the solver ends within half a step of the end time (0.15 ms is no write time: steps of ~7 us)
     assert data["simulated_time_s"] < again["simulated_time_s"] == pytest.approx(1.5e-4, rel=0.05)
     assert (tmp_path / "bath_small_start_tiny" / "results.json").stat().st_mtime_ns == stamp
+    # the state a steady stop leaves for a finer run is reconstructed from the processors when missing
+    from kegel.cfd_cases.foam import time_dirs
+    from kegel.cfd_cases.run import _restart_state
+
+    source = tmp_path / "bath_small_start_tiny"
+    written = time_dirs(source)[-1]
+    shutil.rmtree(written)
+    assert _restart_state(source, 2, 2 * float(written.name)) == float(written.name)
+    assert (source / written.name / "alpha.oil").is_file()
 
 
 @pytest.mark.openfoam

@@ -193,6 +193,46 @@ def test_time_from_rest_counts_the_runs_a_case_was_started_from():
     assert time_from_rest_at_start_s({"initial_state": {"source_time_s": 0.11, "time_from_rest_s": 0.32}}) == 0.32
 
 
+def _written_times(case: Path, names: list[str], where: str = "") -> None:
+    for name in names:
+        d = case / where / name
+        d.mkdir(parents=True)
+        for f in ("U", "alpha.oil"):
+            (d / f).write_text("fake")
+
+
+def test_a_finer_run_maps_the_write_before_the_steady_stop_not_the_last_state(tmp_path):
+    # The solver runs on past the passing check point until the runner reads the forces again
+    # (how far depends on the machine); the regular write before the point does not.
+    import json
+
+    from kegel.cfd_cases.run import _restart_state, last_write_at_or_before, mapping_source_time
+
+    case = tmp_path / "start"
+    _written_times(case, ["0.24", "0.27", "0.3", "0.31012345"])
+    assert last_write_at_or_before(sorted(case.iterdir(), key=lambda d: float(d.name)), 0.30647164).name == "0.3"
+    assert last_write_at_or_before([case / "0.24"], 0.2) is None
+    # where the machine stopped the solver changes nothing
+    assert _restart_state(case, 1, 0.30647164) == 0.3
+    _written_times(case, ["0.3171"])
+    assert _restart_state(case, 1, 0.30647164) == 0.3
+    # a write exactly at the stop point counts (written to 8 digits)
+    assert _restart_state(case, 1, 0.27000000001) == 0.27
+    # without results (a run stopped by its budget or end time) the latest time is mapped
+    assert mapping_source_time(case) == ("0.3171", "its latest time")
+    (case / "results.json").write_text(json.dumps({"restart_state_time_s": 0.3}))
+    assert mapping_source_time(case) == ("0.3", "its last regular write before the steady stop")
+    (case / "results.json").write_text(json.dumps({"restart_state_time_s": 0.33}))
+    name, why = mapping_source_time(case)  # purged: the latest time, and the reason says so
+    assert name == "0.3171" and "0.33 s" in why and "gone" in why
+    # a parallel run's writes are in processor0 (reconstructed there when missing: needs OpenFOAM)
+    par = tmp_path / "par"
+    _written_times(par, ["0.27", "0.3", "0.31"], "processor0")
+    _written_times(par, ["0.3"])  # already reconstructed: nothing to run
+    assert _restart_state(par, 2, 0.305) == 0.3
+    assert _restart_state(par, 2, 0.2) is None
+
+
 def _stand_in_solver(tmp_path, monkeypatch, body: str) -> Path:
     bindir = tmp_path / "bin"
     bindir.mkdir()
