@@ -456,12 +456,16 @@ class CfdResult:
 
 
 class _Progress:
-    """One status line about every ``every_s`` seconds: time, step, dt, Courant, residuals, ETA."""
+    """One status line about every ``every_s`` seconds: time, step, dt, Courant, residuals, ETA.
 
-    def __init__(self, every_s: float = 5.0, stream=sys.stderr):
+    The ETA is to the end time (``end``, simulated seconds or iterations, named in the line); a
+    steady torque usually stops the run sooner, at a point no one can foresee."""
+
+    def __init__(self, every_s: float = 5.0, stream=sys.stderr, end: str = ""):
         self.every_s = every_s
         self.stream = stream
         self.last = 0.0
+        self.end = end
 
     def __call__(self, st: LogState, eta: float) -> None:
         now = time.monotonic()
@@ -474,7 +478,8 @@ class _Progress:
             head = f"t = {st.time:.6g} s  step {st.steps}  dt {st.delta_t:.2e}  Co {st.courant_max:.2f}"
         else:
             head = f"iteration {st.time:.0f}"
-        print(f"cfd: {head}  {res}  ETA {eta_txt}", file=self.stream, flush=True)
+        to = f" to {self.end}" if self.end else ""
+        print(f"cfd: {head}  {res}  ETA{to} {eta_txt}", file=self.stream, flush=True)
 
 
 class _SteadyMonitor:
@@ -619,7 +624,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
         return False
 
     summary = run_solver(case, solver, n_procs=point.n_procs, end_time=end,
-                         progress=_Progress() if progress else None, stop_when=stop_when,
+                         progress=_Progress(end=f"iteration {end:.0f}" if point.flooded else f"t = {end:g} s")
+                         if progress else None, stop_when=stop_when,
                          max_courant=max(25.0, 5.0 * point.max_courant) if not point.flooded else 1e30)
     runtime = time.monotonic() - t0
     if point.n_procs > 1 and time_dirs(case / "processor0"):

@@ -288,3 +288,20 @@ def test_eta_of_a_resumed_run_counts_from_where_it_resumed(tmp_path, monkeypatch
     assert [t for t, _ in seen] == pytest.approx([10.2, 10.3, 10.4, 10.5, 10.6])
     t, eta = seen[-1]
     assert eta == pytest.approx((11.0 - t) / 2.0, rel=0.5)  # 0.1 per 0.05 s: 2 per second
+
+
+def test_progress_line_says_what_its_eta_is_to():
+    # The ETA runs to the end time; a steady torque stops the run sooner.
+    import io
+
+    from kegel.cfd_cases.foam import LogState
+    from kegel.cfd_cases.run import _Progress
+
+    out = io.StringIO()
+    st = LogState(time=0.25, delta_t=1e-4, courant_max=3.0, residuals={"Ux": 2e-3}, steps=100)
+    _Progress(stream=out, end="t = 0.6 s")(st, 1800.0)
+    line = out.getvalue()
+    assert "t = 0.25 s  step 100" in line and "Ux 2.0e-03" in line and line.rstrip().endswith("ETA to t = 0.6 s 30.0 min")
+    out = io.StringIO()
+    _Progress(stream=out)(st, math.nan)
+    assert out.getvalue().rstrip().endswith("ETA ?")
