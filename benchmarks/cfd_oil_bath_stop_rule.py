@@ -18,20 +18,25 @@ The reference run goes to ``DIR/reference`` (default: a temporary folder, remove
 run there that already reached the end time is reused. Not part of ``make bench``. Output:
 benchmarks/results/cfd_oil_bath_stop_rule.json and .png.
 
-Measured (``--work results/cfd/stop_rule --end-time 0.9``, alone on 2 cores, 41 min): the loss
-rises to about 24.2 mN m by 0.25 s (3.5 cage revolutions), stays within 23.6-24.5 to 0.55 s, then
-falls slowly (per-revolution means 23.65, 23.22, 22.85 mN m over the last three, reference
-23.24 mN m), with the oil volume kept to 1e-6. The runner's rule (half-revolution windows, 2 %)
-stops at 0.226 s after 633 s and reports 22.70 mN m, -2.3 % (the mean over its three windows:
--4.9 %); a rule that must hold for half a window or a window stops at 0.35-0.37 s after
-960-1010 s and reports +4.3 to +4.9 %; windows of a whole revolution stop at 0.348 s with +4.9 %
-(three-window mean +1.0 %). A longer or stricter test costs 1.5 times the wall time here and is
-no closer to the long-time mean, which itself still moves by about 0.6 % per cage revolution at
-0.9 s: the runner keeps its rule and reads one oil-bath loss as uncertain by about 5 %.
-That run wrote its fields every 45 ms, a twentieth of its end time (the rule until commit
-38fe3d9), and the solver lands its steps on the write times, so it is another realisation of the
-flow than a run to the default end time (0.6 s, writes every 30 ms = one shaft revolution, as all
-runs now do): the same rule stops that one at 0.307 s with 24.7 mN m, +6 % from this reference.
+Measured (``--work results/cfd/stop_rule2 --end-time 0.9``, alone on 2 cores, 36.5 min, commit
+9f7c52d; the json and png in benchmarks/results are this run): the loss falls to 18.5 mN m at
+0.06 s, rises with a dip at 0.2 s to 24.3 mN m in the fourth cage revolution, and then stays
+within 23.5-24.8 mN m per revolution to 0.86 s (reference, the last three revolutions: 23.69 mN m),
+with the oil volume kept to 1.2e-6. Its loss series is bit for bit that of the tiny start run of
+``kegel cfd run ... --mesh small --start-on tiny`` (end time 0.6 s) up to that run's stop: the
+write times no longer follow the end time. The runner's rule (half-revolution windows, 2 %)
+stops at 0.233 s after 540 s of solver wall time and reports 22.80 mN m, -3.8 % (its three
+windows: -5.6 %); so does a 1 % tolerance. A rule that must hold for half a window or a window
+stops at 0.75-0.86 s after 1780-2060 s (3.3-3.8 times the wall time) with +1.6 / -1.2 %; windows
+of a whole revolution stop at 0.351 s after 819 s with +3.6 % (three windows -0.2 %).
+
+An earlier run (``--work results/cfd/stop_rule``, commit 184f832) wrote its fields every 45 ms, a
+twentieth of its end time, and the solver lands its steps on the write times, so it was another
+realisation of the flow: reference 23.24 mN m, the runner's rule -2.3 % at 0.226 s (633 s),
+holding rules +4.3 to +4.9 % at 0.35-0.37 s (960-1010 s). In both, the runner's rule is within
+4 % of the long-time mean of its own realisation at 0.26-0.66 of the wall time of a rule that
+waits, which is closer in one realisation and farther in the other: the runner keeps its rule and
+reads one oil-bath loss as uncertain by about 5 %.
 """
 
 from __future__ import annotations
