@@ -138,7 +138,6 @@ def _finite(x) -> bool:
     return all(math.isfinite(v) for v in np.ravel(x))
 
 
-@pytest.mark.openfoam
 def test_oil_bath_write_times_do_not_follow_the_end_time():
     from kegel.cfd_cases.run import oil_bath_write_interval_s
 
@@ -148,6 +147,7 @@ def test_oil_bath_write_times_do_not_follow_the_end_time():
     assert oil_bath_write_interval_s(SPEED, 1e-4) == 1e-4
 
 
+@pytest.mark.openfoam
 def test_tiny_flooded_case_runs_and_resumes(tmp_path):
     """Both ways of stopping: an iteration limit, then a resumed run that goes on from there."""
     case = tmp_path / "flooded"
