@@ -28,7 +28,7 @@ larger step costs on the steepest part of the start-up (tiny, 32208, 2000 rpm: 5
 oil and its transport around the housing take tenths of a second of simulated time (0.2 s for
 the 32208 at 2000 rpm), so a fine mesh is best started from a coarse run of the same point
 (``initial_from``: the fields are mapped volume-conservatively; ``kegel cfd run --start-on tiny``
-runs both in one call: 56 min on 2 cores for the small 32208 point at Courant 10 / 3).
+runs both in one call: 49 min on 2 cores for the small 32208 point at Courant 10 / 3).
 """
 
 from __future__ import annotations
