@@ -342,11 +342,14 @@ def mapping_source_time(src: Path) -> tuple[str, str]:
     done = src / "results.json"
     restart = json.loads(done.read_text()).get("restart_state_time_s") if done.is_file() else None
     if restart is not None:  # a steady run: the write before its stop point (see _restart_state)
-        found = last_write_at_or_before(times, float(restart))
-        if found is not None and float(found.name) >= float(restart) * (1 - 1e-9):
+        if isinstance(restart, bool) or not isinstance(restart, (int, float)) or not math.isfinite(restart):
+            raise FoamError(f"{done}: restart_state_time_s = {restart!r}; expected a finite time in seconds "
+                            "(the results of kegel cfd run)")
+        found = last_write_at_or_before(times, restart)
+        if found is not None and float(found.name) >= restart * (1 - 1e-9):
             source_time, why = found.name, "its last regular write before the steady stop"
         else:
-            why = f"its latest time: the write before its steady stop (t = {float(restart):g} s) is gone"
+            why = f"its latest time: the write before its steady stop (t = {restart:g} s) is gone"
     return source_time, why
 
 

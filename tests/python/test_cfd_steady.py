@@ -225,6 +225,11 @@ def test_a_finer_run_maps_the_write_before_the_steady_stop_not_the_last_state(tm
     (case / "results.json").write_text(json.dumps({"restart_state_time_s": 0.33}))
     name, why = mapping_source_time(case)  # purged: the latest time, and the reason says so
     assert name == "0.3171" and "0.33 s" in why and "gone" in why
+    from kegel.cfd_cases.foam import FoamError
+
+    (case / "results.json").write_text(json.dumps({"restart_state_time_s": "0.3"}))
+    with pytest.raises(FoamError, match=r"results\.json: restart_state_time_s = '0\.3'; expected a finite time"):
+        mapping_source_time(case)
     # a parallel run's writes are in processor0 (reconstructed there when missing: needs OpenFOAM)
     par = tmp_path / "par"
     _written_times(par, ["0.27", "0.3", "0.31"], "processor0")
