@@ -20,6 +20,10 @@ void finite(const char* name, double v) { detail::require_finite(kOwner, name, v
 using V = FrictionParameters::Values;
 
 void bind_slice(nb::module_& m) {
+  nb::enum_<RollingThermal>(m, "RollingThermal", "Thermal reduction of the EHL rolling force.")
+      .value("off", RollingThermal::Off)
+      .value("aihara", RollingThermal::Aihara)
+      .value("zhu_cheng", RollingThermal::ZhuCheng);
   nb::class_<V>(m, "FrictionParameterValues", "Friction-law parameters (see kegel/data/friction).")
       .def(nb::init<>())
       .def_rw("tau_L0_Pa", &V::tau_L0_Pa)
@@ -34,7 +38,9 @@ void bind_slice(nb::module_& m) {
       .def_rw("d_max_Ns_m", &V::d_max_Ns_m)
       .def_rw("delta_max_m", &V::delta_max_m)
       .def_rw("gold_C1_Pa_K2", &V::gold_C1_Pa_K2)
-      .def_rw("gold_C2_Pa_K", &V::gold_C2_Pa_K);
+      .def_rw("gold_C2_Pa_K", &V::gold_C2_Pa_K)
+      .def_rw("rolling_thermal", &V::rolling_thermal)
+      .def_rw("inlet_gap_ratio", &V::inlet_gap_ratio);
   nb::class_<FrictionParameters>(m, "FrictionParameters", "Checked friction-law parameters.")
       .def(nb::init<const V&>(), "values"_a)
       .def_prop_ro("values", &FrictionParameters::values)
@@ -84,6 +90,8 @@ void bind_slice(nb::module_& m) {
       .def_prop_ro("F_ehl_sliding_N", [](const R& r) { return std::make_tuple(r.F_ehl_sliding_N[0], r.F_ehl_sliding_N[1]); })
       .def_prop_ro("F_solid_sliding_N", [](const R& r) { return std::make_tuple(r.F_solid_sliding_N[0], r.F_solid_sliding_N[1]); })
       .def_ro("F_ehl_rolling_N", &R::F_ehl_rolling_N)
+      .def_ro("rolling_thermal_factor", &R::rolling_thermal_factor)
+      .def_ro("rolling_starvation_factor", &R::rolling_starvation_factor)
       .def_ro("M_solid_rolling_Nm", &R::M_solid_rolling_Nm)
       .def_ro("M_hysteresis_Nm", &R::M_hysteresis_Nm)
       .def_ro("F_damping_N", &R::F_damping_N)
@@ -156,13 +164,38 @@ void bind_tribology(nb::module_& parent) {
       "Eq. 4-6, 10: limiting-shear lubricant shear stress (odd in u_rel).");
   m.def(
       "biboulet_houpert_rolling_force_N",
-      [](double eta0, double u_av, double R, double L, double Q, double E) {
-        pos("eta0_Pas", eta0); pos("u_av_m_s", u_av); pos("R_m", R); pos("L_m", L);
+      [](double eta0, double u_m, double R, double L, double Q, double E) {
+        pos("eta0_Pas", eta0); pos("u_mean_m_s", u_m); pos("R_m", R); pos("L_m", L);
         pos("Q_N", Q); pos("E_reduced_Pa", E);
-        return tribology::biboulet_houpert_rolling_force_N(eta0, u_av, R, L, Q, E);
+        return tribology::biboulet_houpert_rolling_force_N(eta0, u_m, R, L, Q, E);
       },
-      "eta0_Pas"_a, "u_av_m_s"_a, "R_m"_a, "L_m"_a, "Q_N"_a, "E_reduced_Pa"_a,
-      "Eq. 16-18: EHL rolling resistance force of a slice.");
+      "eta0_Pas"_a, "u_mean_m_s"_a, "R_m"_a, "L_m"_a, "Q_N"_a, "E_reduced_Pa"_a,
+      "EHL rolling resistance force of a line-contact slice (Biboulet-Houpert Part 1, Eq. 40-42; "
+      "the seed's Eq. 16 is misprinted).");
+  m.def(
+      "biboulet_houpert_line_force",
+      [](double U, double W) {
+        pos("U", U); pos("W", W);
+        return tribology::biboulet_houpert_line_force(U, W);
+      },
+      "U"_a, "W"_a,
+      "Dimensionless rolling force F~ of Biboulet-Houpert Part 1 (U = 2 eta0 u_m/(E' R), W = w/(E' R)).");
+  m.def(
+      "aihara_thermal_factor",
+      [](double L) { nonneg("L", L); return tribology::aihara_thermal_factor(L); }, "L"_a,
+      "Aihara (1987) Eq. 21: phi_T = 1/(1 + 0.29 L^0.78), L the thermal loading parameter.");
+  m.def(
+      "thermal_loading_parameter",
+      [](double deta, double u, double k) {
+        finite("deta_dtheta_Pas_K", deta); nonneg("u_m_s", u); pos("thermal_conductivity_W_mK", k);
+        return tribology::thermal_loading_parameter(deta, u, k);
+      },
+      "deta_dtheta_Pas_K"_a, "u_m_s"_a, "thermal_conductivity_W_mK"_a,
+      "L = |d eta/d theta| u^2 / k (Murch-Wilson, Aihara).");
+  m.def(
+      "biboulet_houpert_starvation_factor",
+      [](double S) { nonneg("S", S); return tribology::biboulet_houpert_starvation_factor(S); }, "S"_a,
+      "Biboulet-Houpert Part 1 Eq. 44: starved over flooded rolling force, S >= 2 (0: flooded).");
   m.def(
       "cubic_friction_coefficient",
       [](double v, double mu_s, double mu_d, double v_s, double v_d) {

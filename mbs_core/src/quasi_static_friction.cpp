@@ -482,26 +482,38 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     for (int j = 0; j < Zc; ++j) {
       const Roller& r = rollers[j];
       if (r.points.empty()) continue;
+      // 2 x 2 Newton from (wo, wr); converged when the step falls to the noise floor of the
+      // finite-difference derivatives (1e-10 of the pure-rolling speeds)
+      auto newton = [&](double& wo, double& wr) {
+        for (int it = 0; it < 60; ++it) {
+          const Eval e0 = eval(r, wr, wo, w_i, lub, fp, race, ribp, false, false);
+          const Eval e1 = eval(r, wr + hr, wo, w_i, lub, fp, race, ribp, false, false);
+          const Eval e2 = eval(r, wr, wo + ho, w_i, lub, fp, race, ribp, false, false);
+          const double J11 = (e1.spin_moment - e0.spin_moment) / hr, J12 = (e2.spin_moment - e0.spin_moment) / ho;
+          const double J21 = (e1.axis_moment - e0.axis_moment) / hr, J22 = (e2.axis_moment - e0.axis_moment) / ho;
+          const double det = J11 * J22 - J12 * J21;
+          if (!(std::abs(det) > 1e-12 * std::abs(J11 * J22)) || !std::isfinite(det)) return false;
+          double dr = -(J22 * e0.spin_moment - J12 * e0.axis_moment) / det;
+          double dO = -(-J21 * e0.spin_moment + J11 * e0.axis_moment) / det;
+          // at most 2 % of the pure-rolling speeds per step
+          const double lim = std::max({1.0, std::abs(dr) / (0.02 * std::abs(wR0)), std::abs(dO) / (0.02 * std::abs(wc0))});
+          dr /= lim;
+          dO /= lim;
+          wr += dr;
+          wo += dO;
+          if (!std::isfinite(wr) || !std::isfinite(wo) || std::abs(wo - wc0) > 0.5 * std::abs(wc0)) return false;
+          if (std::abs(dr) <= 1e-10 * std::abs(wR0) && std::abs(dO) <= 1e-10 * std::abs(wc0)) return true;
+        }
+        return false;
+      };
+      // warm start from the last point's orbit of this roller; failing that, cold from the cage
+      // speed and the spin balanced at it (a warm start must never decide the answer)
       double wo = w_c * d.orbit_ratio_[j], wr = spins[j] * d.orbit_ratio_[j];
-      bool ok = false;
-      for (int it = 0; it < 40 && !ok; ++it) {
-        const Eval e0 = eval(r, wr, wo, w_i, lub, fp, race, ribp, false, false);
-        const Eval e1 = eval(r, wr + hr, wo, w_i, lub, fp, race, ribp, false, false);
-        const Eval e2 = eval(r, wr, wo + ho, w_i, lub, fp, race, ribp, false, false);
-        const double J11 = (e1.spin_moment - e0.spin_moment) / hr, J12 = (e2.spin_moment - e0.spin_moment) / ho;
-        const double J21 = (e1.axis_moment - e0.axis_moment) / hr, J22 = (e2.axis_moment - e0.axis_moment) / ho;
-        const double det = J11 * J22 - J12 * J21;
-        if (!(std::abs(det) > 1e-12 * std::abs(J11 * J22)) || !std::isfinite(det)) break;
-        double dr = -(J22 * e0.spin_moment - J12 * e0.axis_moment) / det;
-        double dO = -(-J21 * e0.spin_moment + J11 * e0.axis_moment) / det;
-        // at most 2 % of the pure-rolling speeds per step
-        const double lim = std::max({1.0, std::abs(dr) / (0.02 * std::abs(wR0)), std::abs(dO) / (0.02 * std::abs(wc0))});
-        dr /= lim;
-        dO /= lim;
-        wr += dr;
-        wo += dO;
-        if (!std::isfinite(wr) || !std::isfinite(wo) || std::abs(wo - wc0) > 0.5 * std::abs(wc0)) break;
-        ok = std::abs(dr) <= 1e-12 * std::abs(wR0) && std::abs(dO) <= 1e-12 * std::abs(wc0);
+      bool ok = newton(wo, wr);
+      if (!ok) {
+        wo = w_c;
+        wr = spins[j];
+        ok = newton(wo, wr);
       }
       if (ok) {
         spins[j] = wr;

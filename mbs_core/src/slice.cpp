@@ -30,6 +30,11 @@ FrictionParameters::FrictionParameters(const Values& v) : v_(v) {
   if ((v.gold_C1_Pa_K2 > 0.0) != (v.gold_C2_Pa_K > 0.0)) {
     fail(o, "gold_C2_Pa_K", v.gold_C2_Pa_K, "C1 and C2 both > 0 (Eq. 9 on) or both 0 (off)");
   }
+  const int rt = static_cast<int>(v.rolling_thermal);
+  if (rt < 0 || rt > 2) fail(o, "rolling_thermal", rt, "0 (off), 1 (Aihara) or 2 (Zhu-Cheng)");
+  if (!(v.inlet_gap_ratio == 0.0 || (std::isfinite(v.inlet_gap_ratio) && v.inlet_gap_ratio >= 2.0))) {
+    fail(o, "inlet_gap_ratio", v.inlet_gap_ratio, "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's range)");
+  }
   law_ = tribology::CubicFrictionLaw{v.mu_s, v.mu_d, v.v_s_m_s, v.v_d_m_s};
 }
 
@@ -155,10 +160,20 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
 
   sliding_friction(urx, ury, us, Q, lub, fp, out);
 
-  // Rolling resistance: EHL (Eq. 16-18), solid (Eq. 19), hysteresis (Eq. 20)
+  // Rolling resistance: EHL (Biboulet-Houpert Part 1; the seed's Eq. 16-18 corrected), solid
+  // (Eq. 19), hysteresis (Eq. 20)
   if (uav > 0.0) {
-    out.F_ehl_rolling_N = (1.0 - phi) * tribology::biboulet_houpert_rolling_force_N(
-                                            lub.eta0_Pas, uav, R, in.width_m, Q, E);
+    switch (v.rolling_thermal) {
+      case RollingThermal::Aihara:
+        out.rolling_thermal_factor = tribology::aihara_thermal_factor(
+            tribology::thermal_loading_parameter(lub.deta_dtheta_Pas_K, uav, lub.thermal_conductivity_W_mK));
+        break;
+      case RollingThermal::ZhuCheng: out.rolling_thermal_factor = out.thermal_factor; break;
+      case RollingThermal::Off: out.rolling_thermal_factor = 1.0; break;
+    }
+    out.rolling_starvation_factor = tribology::biboulet_houpert_starvation_factor(v.inlet_gap_ratio);
+    out.F_ehl_rolling_N = (1.0 - phi) * out.rolling_thermal_factor * out.rolling_starvation_factor *
+                          tribology::biboulet_houpert_rolling_force_N(lub.eta0_Pas, uav, R, in.width_m, Q, E);
   }
   out.M_solid_rolling_Nm = phi * tribology::solid_rolling_moment_Nm(v.c_r, v.e_r, Q);
   out.M_hysteresis_Nm = tribology::hysteresis_moment_Nm(Q, v.a_v, b);

@@ -43,13 +43,18 @@ double zhu_cheng_factor(double p0, double E, double u_rel, double u_sum, double 
   return std::clamp(num / den, kZhuChengFloor, 1.0);  // Eq. 12
 }
 
-double biboulet_houpert_rolling_force_N(double eta0, double u_av, double R, double L, double Q,
+double biboulet_houpert_line_force(double U, double W) noexcept {
+  const double M = W / std::sqrt(U);                       // Moes load parameter
+  const double x = (1.4 / 1.45) * std::sqrt(M);
+  const double x2 = x * x, x10 = x2 * x2 * x2 * x2 * x2;
+  return 1.4 * std::sqrt(U * W) / (kBibouletHoupertC * std::pow(1.0 + x10, 0.1));
+}
+
+double biboulet_houpert_rolling_force_N(double eta0, double u_m, double R, double L, double Q,
                                         double E) noexcept {
-  const double U = eta0 * u_av / (E * R);  // Eq. 17
-  const double W = Q / (L * E * R);        // Eq. 18
-  const double x = (1.4 / 1.45) * std::sqrt(W / (2.0 * U));
-  return E * R * L * 1.4 * std::sqrt(2.0 * U) * std::sqrt(W) /
-         (0.985 * std::pow(1.0 + std::pow(x, 10.0), 0.1));  // Eq. 16
+  const double U = 2.0 * eta0 * u_m / (E * R);  // Biboulet-Houpert's U (factor 2)
+  const double W = Q / (L * E * R);
+  return E * R * L * biboulet_houpert_line_force(U, W);
 }
 
 }  // namespace kegel::tribology

@@ -187,3 +187,36 @@ TEST_F(Fixture, RibCellEllipticFilmAndSlidingOnly) {
   EXPECT_NEAR(r.P_ehl_sliding_W + r.P_solid_sliding_W,
               -(r.F_ehl_sliding_N[0] + r.F_solid_sliding_N[0]) * 0.5, 1e-12);
 }
+
+// The EHL rolling force of a slice: (1 - phi) x thermal factor x starvation factor x
+// Biboulet-Houpert, with the thermal model chosen in the parameters.
+TEST_F(Fixture, RollingForceAppliesTheThermalAndStarvationFactors) {
+  namespace tr = kegel::tribology;
+  const double Q = 50.0, u = 5.0, E = 210e9 / 0.91, R = 7.5e-3, L = 0.7e-3;
+  const double bh = tr::biboulet_houpert_rolling_force_N(state.eta0_Pas, u, R, L, Q, E);
+  auto with = [&](kegel::RollingThermal t, double S) {
+    auto v = params();
+    v.rolling_thermal = t;
+    v.inlet_gap_ratio = S;
+    kegel::SliceResult r;
+    kegel::evaluate_slice(slice(Q, u, u), sp, state, kegel::FrictionParameters(v), r);
+    return r;
+  };
+  const auto off = with(kegel::RollingThermal::Off, 0.0);
+  EXPECT_NEAR(off.F_ehl_rolling_N, (1.0 - off.phi) * bh, 1e-12 * bh);
+  const auto ai = with(kegel::RollingThermal::Aihara, 0.0);
+  const double phiT = tr::aihara_thermal_factor(tr::thermal_loading_parameter(state.deta_dtheta_Pas_K, u,
+                                                                               state.thermal_conductivity_W_mK));
+  EXPECT_LT(phiT, 1.0);
+  EXPECT_DOUBLE_EQ(ai.rolling_thermal_factor, phiT);
+  EXPECT_NEAR(ai.F_ehl_rolling_N, (1.0 - ai.phi) * phiT * bh, 1e-12 * bh);
+  const auto zc = with(kegel::RollingThermal::ZhuCheng, 0.0);
+  EXPECT_DOUBLE_EQ(zc.rolling_thermal_factor, zc.thermal_factor);
+  const auto st = with(kegel::RollingThermal::Off, 10.0);
+  EXPECT_DOUBLE_EQ(st.rolling_starvation_factor, tr::biboulet_houpert_starvation_factor(10.0));
+  EXPECT_NEAR(st.F_ehl_rolling_N, off.F_ehl_rolling_N * st.rolling_starvation_factor, 1e-12 * bh);
+  // a starvation ratio below Biboulet-Houpert's range is rejected
+  auto bad = params();
+  bad.inlet_gap_ratio = 1.0;
+  EXPECT_THROW(kegel::FrictionParameters{bad}, std::invalid_argument);
+}

@@ -19,6 +19,11 @@ namespace kegel {
 
 /// Friction-law parameters that the seed paper does not give (kegel/data/friction/*.toml cites
 /// each one). Throws std::invalid_argument from the constructor on invalid values.
+/// Thermal reduction of the EHL rolling resistance (inlet shear heating): none, Aihara's
+/// phi_T = 1/(1 + 0.29 L^0.78) (default), or the Zhu-Cheng film-thickness factor of Eq. 12 (as
+/// Zhou and Hoeprich 1991 apply it to the rolling force).
+enum class RollingThermal { Off = 0, Aihara = 1, ZhuCheng = 2 };
+
 class FrictionParameters {
  public:
   struct Values {
@@ -35,6 +40,10 @@ class FrictionParameters {
     double delta_max_m = 1e-6;     ///< penetration of full damping (Eq. 2)
     double gold_C1_Pa_K2 = 0.0;    ///< Gold et al. (Eq. 9); 0 switches compression heating off
     double gold_C2_Pa_K = 0.0;     ///< Gold et al. (Eq. 9); 0 switches compression heating off
+    RollingThermal rolling_thermal = RollingThermal::Aihara;  ///< thermal factor of the EHL rolling force
+    /// Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
+    /// the inlet oil gap over the fully flooded film, S >= 2; 0 = fully flooded
+    double inlet_gap_ratio = 0.0;
   };
   /// True when Eq. 9 (compression heating of the contact lubricant) is active.
   bool compression_heating() const noexcept { return v_.gold_C1_Pa_K2 > 0.0 && v_.gold_C2_Pa_K > 0.0; }
@@ -117,7 +126,9 @@ struct SliceResult {
   double F_ehl_sliding_N[2] = {0.0, 0.0};    ///< (1 - phi) tau A, against u1 - u2
   double F_solid_sliding_N[2] = {0.0, 0.0};  ///< phi mu Q, against u1 - u2
   // Rolling resistance (magnitudes; each opposes the rolling of both surfaces)
-  double F_ehl_rolling_N = 0.0;       ///< (1 - phi) x Eq. 16
+  double F_ehl_rolling_N = 0.0;       ///< (1 - phi) x thermal x starvation x Biboulet-Houpert (the seed's Eq. 16, corrected)
+  double rolling_thermal_factor = 1.0;  ///< thermal factor applied to the EHL rolling force
+  double rolling_starvation_factor = 1.0;  ///< starvation factor applied to the EHL rolling force
   double M_solid_rolling_Nm = 0.0;    ///< phi x Eq. 19
   double M_hysteresis_Nm = 0.0;       ///< Eq. 20 (material, not weighted)
   // Normal direction

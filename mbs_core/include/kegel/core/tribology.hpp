@@ -100,11 +100,62 @@ inline double bair_winer_shear_stress_Pa(double eta_Pas, double u_rel_m_s, doubl
   return u_rel_m_s < 0.0 ? -tau : tau;
 }
 
-/// Eq. 16-18 (Biboulet and Houpert): EHL rolling resistance force of a line contact slice,
-/// F = E' R L 1.4 (2U)^0.5 W^0.5 / (0.985 (1 + ((1.4/1.45) sqrt(W/(2U)))^10)^(1/10)),
-/// U = eta0 u_av/(E' R), W = Q/(L E' R).
-double biboulet_houpert_rolling_force_N(double eta0_Pas, double u_av_m_s, double R_m,
+/// Biboulet and Houpert (Proc. IMechE J 224 (2010) 765-775, Part 1, Eq. 40-42): dimensionless
+/// hydrodynamic rolling force of a line contact in pure rolling,
+///   F~ = 1.4 sqrt(U W) / (c (1 + ((1.4/1.45) sqrt(M))^10)^(1/10)),  c = 4 / (8/pi)^1.5,
+/// with their groups U = 2 eta0 u_m / (E' R) (u_m the mean entrainment speed, note the 2),
+/// W = w / (E' R) (w the load per unit length) and the Moes load parameter M = W / sqrt(U).
+/// Asymptotes: isoviscous-rigid F~ -> (1.4/c) sqrt(U W) (M -> 0) and elastic (EHL)
+/// F~ -> (1.45/c) U^(3/4) (M -> infinity), independent of the load.
+///
+/// Seed misprint (Wingertszahn et al. 2023, Eq. 16-18): the seed defines U without the 2 and
+/// writes sqrt(W/(2U)) in the blend where the source has sqrt(M) = sqrt(W / sqrt(U)). As printed
+/// the EHL limit becomes 1.47 (2U) instead of 1.47 U^(3/4): linear in the speed and 80-300 times
+/// too small at bearing conditions (../shared/reference/known_values.md, EHL rolling resistance).
+inline constexpr double kBibouletHoupertC = 0.9843506216076513;  // 4 / (8/pi)^1.5
+double biboulet_houpert_line_force(double U, double W) noexcept;
+/// Isoviscous-rigid asymptote of biboulet_houpert_line_force: (1.4/c) sqrt(U W).
+inline double biboulet_houpert_line_force_ivr(double U, double W) noexcept {
+  return 1.4 / kBibouletHoupertC * std::sqrt(U * W);
+}
+/// Elastic (EHL) asymptote of biboulet_houpert_line_force: (1.45/c) U^(3/4).
+inline double biboulet_houpert_line_force_ehl(double U) noexcept {
+  return 1.45 / kBibouletHoupertC * std::pow(U, 0.75);
+}
+
+/// EHL rolling resistance force [N] of a line-contact slice of width L_m under the load Q_N:
+/// f = E' R F~(U, W) per unit length (biboulet_houpert_line_force) times L, with
+/// U = 2 eta0 u_m/(E' R) and W = Q/(L E' R). It acts on each of the two surfaces against its
+/// motion relative to the contact (dissipation f (u1 + u2) = 2 f u_m in pure rolling).
+double biboulet_houpert_rolling_force_N(double eta0_Pas, double u_mean_m_s, double R_m,
                                         double L_m, double Q_N, double E_reduced_Pa) noexcept;
+
+/// Thermal loading parameter of the inlet, L = (-d eta/d theta) u^2 / k = eta0 beta u^2 / k
+/// (Murch and Wilson 1975; Aihara 1987, Eq. 20; the Gamma of the seed's Eq. 14), with u the
+/// rolling (mean entrainment) speed and k the lubricant's thermal conductivity.
+inline double thermal_loading_parameter(double deta_dtheta_Pas_K, double u_m_s,
+                                        double thermal_conductivity_W_mK) noexcept {
+  return std::abs(deta_dtheta_Pas_K) * u_m_s * u_m_s / thermal_conductivity_W_mK;
+}
+
+/// Aihara's thermal reduction of the EHL rolling force by inlet shear heating,
+/// phi_T = 1 / (1 + 0.29 L^0.78) (J. Tribol. 109 (1987) 471, Eq. 21: his fit, for L from 0 to
+/// several tens, of the ratio of Goksem and Hargreaves' thermal to isothermal rolling force,
+/// after Murch and Wilson). Reprinted with the same constants by Manjunath et al., Machines 11
+/// (2023) 801, Eq. 24.
+inline double aihara_thermal_factor(double L) noexcept {
+  return 1.0 / (1.0 + 0.29 * std::pow(L > 0.0 ? L : 0.0, 0.78));
+}
+
+/// Starvation of the rolling resistance, Biboulet and Houpert Part 1, Eq. 44:
+/// T / T_flooded = (S^2 + 162.8 S) / (S^2 + 193.1 S + 1257), S the oil gap at the inlet meniscus
+/// over the fully flooded film; computed by them down to S = 2 (S is clamped there); S <= 0
+/// means fully flooded (factor 1).
+inline double biboulet_houpert_starvation_factor(double S) noexcept {
+  if (!(S > 0.0)) return 1.0;
+  const double s = S < 2.0 ? 2.0 : S;
+  return (s * s + 162.8 * s) / (s * s + 193.1 * s + 1257.0);
+}
 
 /// Eq. 19 (Scheuermann): solid rolling friction moment M = c_r F_N^e_r.
 inline double solid_rolling_moment_Nm(double c_r, double e_r, double F_N) noexcept {
