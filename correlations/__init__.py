@@ -5,28 +5,65 @@ question through :func:`hydraulic_torques`: given a bearing's derived geometry, 
 state, the shaft speed and the oil level, the hydraulic torques on inner ring, outer ring and
 cage, by component (:class:`HydraulicTorques`).
 
-Available: ``"liebrecht"`` (seed paper Eq. 38-40). The SKF drag-loss model is planned: it needs
-the drag-loss factor V_M, which SKF publishes only as a diagram of oil level.
+Available: ``"liebrecht"`` (seed paper Eq. 38-40, speeds in 1/min, see :mod:`.liebrecht`) and
+``"skf"`` (the drag moment of the SKF catalogue model, :mod:`.skf`, with V_M digitised from the
+catalogue's diagram; it is one moment of the bearing, which :func:`hydraulic_torques` puts on the
+inner ring). :mod:`.skf` also gives the catalogue's rolling and sliding moments
+(:func:`skf_friction`), an independent check of kegel's contact friction.
 """
 
 from __future__ import annotations
+
+import math
 
 from ..geometry import BearingGeometry
 from ..lubricant import LubricantState
 from ..tribology import cage_speed_rad_s as pure_rolling_cage_speed
 from .common import HydraulicTorques, immersed_fraction
-from .liebrecht import LiebrechtInput, fractions_for_oil_level, liebrecht_torques
+from .liebrecht import (
+    LiebrechtInput,
+    cylinder_drag_coefficient,
+    fractions_for_oil_level,
+    free_disc_moment_coefficient,
+    implied_coefficients,
+    liebrecht_torques,
+)
+from .skf import (
+    SkfBearing,
+    SkfDrag,
+    SkfFriction,
+    drag_loss_variable,
+    skf_bearing,
+    skf_drag_moment,
+    skf_friction,
+    skf_oil_level_H_m,
+    skf_rolling_moment,
+    skf_sliding_moment,
+)
 
 __all__ = [
     "CORRELATIONS",
     "HydraulicTorques",
     "LiebrechtInput",
+    "SkfBearing",
+    "SkfDrag",
+    "SkfFriction",
+    "cylinder_drag_coefficient",
+    "drag_loss_variable",
+    "free_disc_moment_coefficient",
     "hydraulic_torques",
     "immersed_fraction",
+    "implied_coefficients",
     "liebrecht_torques",
+    "skf_bearing",
+    "skf_drag_moment",
+    "skf_friction",
+    "skf_oil_level_H_m",
+    "skf_rolling_moment",
+    "skf_sliding_moment",
 ]
 
-CORRELATIONS = ("liebrecht",)
+CORRELATIONS = ("liebrecht", "skf")
 
 _TWO_PI = 6.283185307179586
 
@@ -55,7 +92,7 @@ def hydraulic_torques(
     oil_level_m
         Oil surface above the lowest point of the bearing's outer diameter, in [0, D].
     cage_speed_rad_s
-        Cage speed; default: pure rolling of the apex-matched geometry.
+        Cage speed (Liebrecht); default: pure rolling of the apex-matched geometry.
 
     Raises
     ------
@@ -67,6 +104,8 @@ def hydraulic_torques(
     D = geometry.outer_diameter_m
     if not 0.0 <= oil_level_m <= D:
         raise ValueError(f"oil_level_m = {oil_level_m}: expected a level in [0, D] = [0, {D}] m")
+    if correlation == "skf":
+        return _skf_hydraulic(geometry, lubricant, shaft_speed_rad_s, oil_level_m)
     if cage_speed_rad_s is None:
         cage_speed_rad_s = pure_rolling_cage_speed(geometry, shaft_speed_rad_s)
     fractions = fractions_for_oil_level(oil_level_m, D, geometry.pitch_diameter_m, geometry.roller_mean_diameter_m,
@@ -84,3 +123,17 @@ def hydraulic_torques(
         **fractions,
     )
     return liebrecht_torques(x)
+
+
+def _skf_hydraulic(g: BearingGeometry, lubricant: LubricantState, speed_rad_s: float,
+                   oil_level_m: float) -> HydraulicTorques:
+    """SKF drag moment (2013 edition) from the geometry's d, D and B; no series constants are
+    needed for the drag. One moment of the whole bearing: put on the inner ring (the shaft pays
+    it), signed like the speed."""
+    bearing = SkfBearing(designation=g.designation, bore_diameter_m=g.bore_diameter_m,
+                         outer_diameter_m=g.outer_diameter_m, width_m=g.cone_width_m)
+    drag = skf_drag_moment(bearing, speed_rad_s=abs(speed_rad_s),
+                           kinematic_viscosity_m2_s=lubricant.kinematic_viscosity_m2_s, oil_level_m=oil_level_m)
+    m = math.copysign(drag.drag_Nm, speed_rad_s)
+    return HydraulicTorques(correlation="skf", inner_ring_Nm=m, outer_ring_Nm=0.0, cage_Nm=0.0,
+                            components={"drag_Nm": m})
