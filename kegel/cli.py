@@ -11,7 +11,8 @@ Commands
 ``kegel tribology [--bearing 32216 --speed "2000 rpm" --axial-load "6 kN" ...]``
     Film state and friction by mechanism of one roller/raceway contact.
 ``kegel losses 32208 [--oil-level flooded ...] [--plot losses.png]``
-    Hydraulic losses by correlation against speed and oil level.
+    Hydraulic losses by correlation against speed and oil level: Liebrecht and the SKF drag
+    moment side by side, with the SKF rolling + sliding moment as a check of contact friction.
 ``kegel run SCENE [--set KEY=VALUE ...] [--output DIR]``
     Run a scene: quasi-static load distribution, friction by contact and mechanism, hydraulic
     loss of an oil bath; a table, results.json, results.csv and plots.
@@ -144,7 +145,7 @@ def _cmd_tribology(args: argparse.Namespace) -> int:
         [
             ("EHL sliding (Bair-Winer, Eq. 4-10)", t["F_ehl_sliding_x_N"], None, t["P_ehl_sliding_W"]),
             ("solid sliding (Eq. 21-28)", t["F_solid_sliding_x_N"], None, t["P_solid_sliding_W"]),
-            ("EHL rolling (Biboulet-Houpert, Eq. 16)", t["F_ehl_rolling_N"], None, t["P_ehl_rolling_W"]),
+            ("EHL rolling (Biboulet-Houpert Part 1)", t["F_ehl_rolling_N"], None, t["P_ehl_rolling_W"]),
             ("solid rolling (Scheuermann, Eq. 19)", None, t["M_solid_rolling_Nm"] * 1e3, t["P_solid_rolling_W"]),
             ("hysteresis (Johnson, Eq. 20)", None, t["M_hysteresis_Nm"] * 1e3, t["P_hysteresis_W"]),
             ("total", None, None, t["P_total_W"]),
@@ -163,7 +164,8 @@ def _cmd_tribology(args: argparse.Namespace) -> int:
 def _cmd_losses(args: argparse.Namespace) -> int:
     import numpy as np
 
-    from .correlations import CORRELATIONS, hydraulic_torques
+    from .correlations import hydraulic_torques
+    from .correlations.skf import SkfBearing, skf_bearing, skf_friction, skf_oil_level_H_m
     from .scene import resolve_oil_level
 
     src = "command line"
@@ -178,37 +180,92 @@ def _cmd_losses(args: argparse.Namespace) -> int:
     lo, hi = (parse_quantity(t, "speed", source=src, key="--speed") for t in speeds_text)
     if args.points < 1:
         raise KegelInputError(src, "--points", args.points, "at least one point")
+    loads = {}
+    for key, text in (("--axial-load", args.axial_load), ("--radial-load", args.radial_load)):
+        loads[key] = parse_quantity(text, "force", source=src, key=key)
+        if not loads[key] >= 0.0:
+            raise KegelInputError(src, key, text, "a force >= 0, e.g. '6 kN'")
+    fa, fr = loads["--axial-load"], loads["--radial-load"]
     speeds = np.linspace(lo, hi, args.points) if args.points > 1 else np.array([lo])
     levels_text = args.oil_level or ["half_roller", "shaft_center", "flooded"]
     levels = [(t, resolve_oil_level(t, bearing, source=src, key="--oil-level")) for t in levels_text]
-    rows = []
-    for corr in CORRELATIONS:
-        for text, h in levels:
-            for w in speeds:
-                t = hydraulic_torques(corr, g, state, shaft_speed_rad_s=float(w), oil_level_m=h)
-                rows.append({"correlation": corr, "oil_level": text, "oil_level_m": h, "speed_rpm": float(w) * 30 / math.pi,
-                             **t.components, "inner_ring_Nm": t.inner_ring_Nm, "outer_ring_Nm": t.outer_ring_Nm,
-                             "cage_Nm": t.cage_Nm, "total_Nm": t.total_Nm})
+    try:
+        sb = skf_bearing(bearing)
+        contact_check = True
+    except KegelInputError:  # no SKF series constants for this bearing: drag only
+        sb = SkfBearing(designation=bearing.designation, bore_diameter_m=bearing.bore_diameter_m,
+                        outer_diameter_m=bearing.outer_diameter_m, width_m=bearing.cone_width_m)
+        contact_check = False
+    rows, skf_rows, side = [], [], []
+    for text, h in levels:
+        for w in speeds:
+            w = float(w)
+            rpm = w * 30 / math.pi
+            t = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=h)
+            rows.append({"correlation": "liebrecht", "oil_level": text, "oil_level_m": h, "speed_rpm": rpm,
+                         **t.components, "inner_ring_Nm": t.inner_ring_Nm, "outer_ring_Nm": t.outer_ring_Nm,
+                         "cage_Nm": t.cage_Nm, "total_Nm": t.total_Nm})
+            if contact_check:
+                f = skf_friction(sb, speed_rad_s=abs(w), kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                                 axial_load_N=fa, radial_load_N=fr, oil_level_m=h, edition=args.skf_edition)
+                d, contact = f.drag, {"rolling_Nm": math.copysign(f.rolling_Nm, w),
+                                      "sliding_Nm": math.copysign(f.sliding_Nm, w),
+                                      "rolling_sliding_Nm": math.copysign(f.rolling_sliding_Nm, w),
+                                      "phi_ish": f.phi_ish, "phi_rs": f.phi_rs, "phi_bl": f.phi_bl, "mu_sl": f.mu_sl}
+            else:
+                from .correlations.skf import skf_drag_moment
+
+                d = skf_drag_moment(sb, speed_rad_s=abs(w), kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                                    oil_level_m=h, edition=args.skf_edition)
+                contact = {"rolling_Nm": None, "sliding_Nm": None, "rolling_sliding_Nm": None,
+                           "phi_ish": None, "phi_rs": None, "phi_bl": None, "mu_sl": None}
+            drag = math.copysign(d.drag_Nm, w)
+            skf_rows.append({"correlation": "skf", "oil_level": text, "oil_level_m": h,
+                             "oil_level_H_m": skf_oil_level_H_m(h, sb.outer_diameter_m, sb.mean_diameter_m),
+                             "flooded": d.flooded, "speed_rpm": rpm, "drag_Nm": drag,
+                             "drag_first_term_Nm": math.copysign(d.first_term_Nm, w),
+                             "drag_second_term_Nm": math.copysign(d.second_term_Nm, w), "V_M": d.V_M,
+                             "inner_ring_Nm": drag, "outer_ring_Nm": 0.0, "cage_Nm": 0.0, "total_Nm": drag, **contact})
+            side.append({"oil_level": text, "oil_level_m": h, "speed_rpm": rpm, "liebrecht_total_Nm": t.total_Nm,
+                         "liebrecht_drag_rollers_Nm": t.components["drag_rollers_Nm"], "skf_drag_Nm": drag,
+                         "skf_rolling_sliding_Nm": contact["rolling_sliding_Nm"]})
+    skf_note = {"edition": args.skf_edition, "axial_load_N": fa, "radial_load_N": fr, "lubrication": "oil_bath",
+                "mean_diameter_m": sb.mean_diameter_m, "width_B_m": sb.width_m,
+                "rolling_sliding": "computed" if contact_check else "no SKF series constants for this bearing",
+                "verify": True}
     plot_path = None
     if args.plot:
-        plot_path = _plot_losses(rows, g, lub.name, T, Path(args.plot))
+        plot_path = _plot_losses(rows, skf_rows, g, lub.name, T, Path(args.plot))
     if args.format == "json":
         _json_out({"bearing": bearing.designation, "lubricant": lub.name, "temperature_K": T,
-                   "units": "SI; speeds of Eq. 38-40 in revolutions per second", "points": rows,
+                   "units": "SI (N m, m); Liebrecht's Eq. 38-40 take the speeds in 1/min; SKF in catalogue units inside",
+                   "skf": skf_note, "points": rows + skf_rows, "side_by_side": side,
                    "plot": str(plot_path) if plot_path else None})
         return 0
-    print(f"Hydraulic losses of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC "
-          f"(Liebrecht, seed paper Eq. 38-40; torques in N mm)")
-    _print_table(("correlation", "oil level", "n [rpm]", "drag", "churning OR", "churning IR", "total"),
-                 [(r["correlation"], f"{r['oil_level']} ({r['oil_level_m'] * 1e3:.1f} mm)", r["speed_rpm"],
-                   r["drag_rollers_Nm"] * 1e3, r["churning_outer_ring_Nm"] * 1e3, r["churning_inner_ring_Nm"] * 1e3,
-                   r["total_Nm"] * 1e3) for r in rows])
+    print(f"Hydraulic losses of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC, torques in N mm")
+    print("  Liebrecht: seed paper Eq. 38-40, speeds in 1/min. SKF: catalogue drag moment "
+          f"({args.skf_edition} edition), H = oil level - D/2 + 0.6 d_m, flooded at H >= 1.2 d_m.")
+    if contact_check:
+        print(f"  SKF rolling+sliding: the catalogue's contact friction at Fa = {fa / 1e3:g} kN, Fr = {fr / 1e3:g} kN "
+              "(oil bath), an independent check of kegel's contact friction, not a hydraulic loss.")
+    else:
+        print(f"  SKF rolling+sliding: no SKF series constants for bearing {bearing.designation}.")
+
+    def mm(v):
+        return None if v is None else v * 1e3
+
+    _print_table(("oil level", "n [rpm]", "Liebrecht drag (38)", "churning OR (39)", "churning IR (40)",
+                  "Liebrecht total", "SKF drag", "SKF rolling+sliding"),
+                 [(f"{r['oil_level']} ({r['oil_level_m'] * 1e3:.1f} mm)", r["speed_rpm"], mm(r["drag_rollers_Nm"]),
+                   mm(r["churning_outer_ring_Nm"]), mm(r["churning_inner_ring_Nm"]), mm(r["total_Nm"]),
+                   mm(k["drag_Nm"]), mm(k["rolling_sliding_Nm"])) for r, k in zip(rows, skf_rows)])
     if plot_path:
         print(f"plot written to {plot_path}")
     return 0
 
 
-def _plot_losses(rows: list[dict[str, Any]], g, lubricant: str, T: float, path: Path) -> Path:
+def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, lubricant: str, T: float,
+                 path: Path) -> Path:
     import os
     import tempfile
 
@@ -218,28 +275,34 @@ def _plot_losses(rows: list[dict[str, Any]], g, lubricant: str, T: float, path: 
     import matplotlib.pyplot as plt
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    for level in dict.fromkeys(r["oil_level"] for r in rows):
+    for i, level in enumerate(dict.fromkeys(r["oil_level"] for r in rows)):
         sel = [r for r in rows if r["oil_level"] == level]
-        ax1.plot([r["speed_rpm"] for r in sel], [r["total_Nm"] * 1e3 for r in sel], marker="o",
-                 label=f"{level} ({sel[0]['oil_level_m'] * 1e3:.1f} mm)")
+        ks = [r for r in skf_rows if r["oil_level"] == level]
+        colour = f"C{i % 10}"
+        ax1.plot([r["speed_rpm"] for r in sel], [r["total_Nm"] * 1e3 for r in sel], marker="o", color=colour,
+                 label=f"Liebrecht, {level} ({sel[0]['oil_level_m'] * 1e3:.1f} mm)")
+        ax1.plot([r["speed_rpm"] for r in ks], [r["drag_Nm"] * 1e3 for r in ks], marker="s", ls="--", color=colour,
+                 label=f"SKF drag, {level}")
     ax1.set_xlabel("shaft speed [rpm]")
     ax1.set_ylabel("hydraulic torque [N mm]")
     ax1.set_title("total vs speed")
-    ax1.legend()
+    ax1.legend(fontsize=7)
     last = max(r["speed_rpm"] for r in rows)
     sel = [r for r in rows if r["speed_rpm"] == last]
-    x = range(len(sel))
+    ks = [r for r in skf_rows if r["speed_rpm"] == last]
+    x = [2 * i for i in range(len(sel))]
     bottom = [0.0] * len(sel)
     for key, label in (("drag_rollers_Nm", "roller drag (38)"), ("churning_outer_ring_Nm", "churning OR (39)"),
                        ("churning_inner_ring_Nm", "churning IR (40)")):
         vals = [r[key] * 1e3 for r in sel]
         ax2.bar(x, vals, bottom=bottom, label=label)
         bottom = [b + v for b, v in zip(bottom, vals)]
-    ax2.set_xticks(list(x), [r["oil_level"] for r in sel])
+    ax2.bar([v + 0.8 for v in x], [r["drag_Nm"] * 1e3 for r in ks], width=0.8, color="0.5", label="SKF drag")
+    ax2.set_xticks([v + 0.4 for v in x], [r["oil_level"] for r in sel])
     ax2.set_ylabel("hydraulic torque [N mm]")
     ax2.set_title(f"components at {last:.0f} rpm")
-    ax2.legend()
-    fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC, Liebrecht (seed paper Eq. 38-40)")
+    ax2.legend(fontsize=7)
+    fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC: Liebrecht (Eq. 38-40, 1/min) and SKF drag")
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
@@ -272,6 +335,14 @@ def _scene_summary(scene: Scene) -> dict[str, Any]:
             {**p.as_dict(), "lubricant_state": states[p.temperature_K].as_dict()} for p in scene.operating_points
         ],
     }
+
+
+def _cmd_validate(args: argparse.Namespace) -> int:
+    from .validation import print_report, run_validation
+
+    result = run_validation(args.output, progress=sys.stderr.isatty())
+    print_report(result)
+    return 0
 
 
 def _cmd_check(args: argparse.Namespace) -> int:
@@ -319,9 +390,18 @@ def _cmd_run(args: argparse.Namespace) -> int:
                      p["friction_torque_Nm"], p["hydraulic_torque_Nm"], p["total_torque_Nm"],
                      100 * p["cage_slip"], mech["ehl_sliding"] + mech["solid_sliding"],
                      mech["ehl_rolling"] + mech["solid_rolling"] + mech["hysteresis"],
-                     p["torque_by_contact_Nm"]["rib"], min(p["Lambda_min"].values())))
+                     p["torque_by_contact_Nm"]["rib"], min(p["Lambda_min"].values()),
+                     (p.get("skf_catalogue_model") or {}).get("rolling_sliding_Nm", float("nan")),
+                     "yes" if p["converged"] else "FAILED"))
     _print_table(("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
-                  "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "rib [Nm]", "Lambda_min"), rows)
+                  "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "rib [Nm]", "Lambda_min", "SKF rr+sl [Nm]",
+                  "converged"), rows)
+    if any(p.get("skf_catalogue_model") for p in result.points):
+        print("  SKF rr+sl: the SKF catalogue model's rolling + sliding moment (an independent engineering model; "
+              "kegel.correlations.skf), beside M_fric")
+    failed = [p for p in result.points if not p["converged"]]
+    for p in failed:
+        print(f"  point {p['index']} FAILED its plausibility gates: {p.get('failure')}")
     if any(p["axial_load_N"] is None for p in result.points):
         print("  * axial force carried at the prescribed axial offset")
     print(f"results: {result.files['json']}, {result.files['csv']}")
@@ -377,7 +457,7 @@ def _parser() -> argparse.ArgumentParser:
     common(tr)
     tr.set_defaults(func=_cmd_tribology)
 
-    lo = sub.add_parser("losses", help="hydraulic losses by correlation, against speed and oil level")
+    lo = sub.add_parser("losses", help="hydraulic losses by correlation (Liebrecht, SKF), against speed and oil level")
     lo.add_argument("bearing", help="bearing designation or .toml file")
     lo.add_argument("--material", default="bearing_steel")
     lo.add_argument("--lubricant", default="FVA3")
@@ -387,12 +467,23 @@ def _parser() -> argparse.ArgumentParser:
     lo.add_argument("--oil-level", action="append", metavar="LEVEL",
                     help="none, half_roller, shaft_center, flooded or a length (repeatable)")
     lo.add_argument("--plot", metavar="PNG", help="write torque vs speed and components to this file")
+    lo.add_argument("--axial-load", default="6 kN",
+                    help='axial load of the SKF rolling and sliding moments (default "6 kN")')
+    lo.add_argument("--radial-load", default="0 kN",
+                    help='radial load of the SKF rolling and sliding moments (default "0 kN")')
+    lo.add_argument("--skf-edition", choices=("2013", "2005"), default="2013",
+                    help="SKF catalogue edition of the drag equation (default 2013)")
     common(lo)
     lo.set_defaults(func=_cmd_losses)
 
     from .cfd_cases.cli import add_cfd_parser
 
     add_cfd_parser(sub, common)
+
+    va = sub.add_parser("validate", help="kegel's bearing torque against measured data and the SKF catalogue model")
+    va.add_argument("--output", default="results/validation", help="result folder (default: results/validation)")
+    common(va)
+    va.set_defaults(func=_cmd_validate)
 
     for name, func, text in (("check", _cmd_check, "validate a scene file"), ("run", _cmd_run, "run a scene")):
         sp = sub.add_parser(name, help=text)

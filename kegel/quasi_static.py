@@ -26,7 +26,8 @@ from .tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
 Q = _core.quasi_static
 
-__all__ = ["BearingFrictionResult", "LoadDistribution", "bearing_friction", "bearing_model", "load_distribution"]
+__all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "bearing_friction", "bearing_model",
+           "load_distribution", "plausibility_failures"]
 
 
 def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, *, slices: int = 30,
@@ -191,6 +192,12 @@ class BearingFrictionResult:
     roller_orbit_rad_s: np.ndarray | None = None
     roller_drift_m: float = 0.0
     locked_rollers: int = 0
+    #: why the point failed its plausibility gates (None when it passed them); see
+    #: :func:`plausibility_failures`
+    failure: str | None = None
+    #: how it was solved: "warm" (from the previous point's state), "cold" (fresh state, after
+    #: a warm solution failed its gates, or when no state was passed in)
+    start: str = "cold"
 
     @property
     def cage_slip(self) -> float:
@@ -250,8 +257,14 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         pockets); the pocket model there gave a 15 % higher torque.
     Other parameters as in :func:`load_distribution`; the centrifugal force uses the
     pure-rolling cage speed.
+
+    Every solution passes the plausibility gates of :func:`plausibility_failures` (power balance,
+    drive against outer-ring torque, sign, ring equilibrium) before it is called converged. A
+    warm-started solution (``data`` passed in) that fails them is solved again from a fresh state;
+    one that still fails is returned with ``converged = False`` and the residuals in ``failure``.
     """
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
+    data_given = data is not None
     data = data or Q.BearingData(model)
     cage0 = pure_rolling_cage_speed(g, inner_speed_rad_s)
     dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
@@ -268,15 +281,33 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         raise KegelInputError("<argument>", "cage", cage, "True, False, 'off', 'pocket' or 'free_rollers'")
     mode = modes[cage]
 
-    def evaluate(mode: str) -> dict:
+    def evaluate(mode: str, data) -> dict:
         return Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant),
                                            race, rib, rib_cells, getattr(Q.CageModel, mode))
 
-    f = evaluate(mode)
-    if cage is True and f["roller_drift_m"] > g.cage_pocket_clearance_circumferential_m:
-        # the free rollers would run into their pocket walls: the pockets carry them
-        mode = "pocket"
-        f = evaluate(mode)
+    warm = data_given
+
+    def solve(data) -> tuple[str, dict]:
+        f = evaluate(mode, data)
+        m = mode
+        if cage is True and f["roller_drift_m"] > g.cage_pocket_clearance_circumferential_m:
+            # the free rollers would run into their pocket walls: the pockets carry them
+            m = "pocket"
+            f = evaluate(m, data)
+        return m, f
+
+    used, f = solve(data)
+    problems = plausibility_failures(f, inner_speed_rad_s, dist.residual)
+    start = "warm" if warm else "cold"
+    if problems and warm:
+        # a warm start must never decide the answer: solve the point again from a fresh state
+        data = Q.BearingData(model)
+        dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                                 radial_N=radial_N, misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0,
+                                 model=model, data=data)
+        used, f = solve(data)
+        problems = plausibility_failures(f, inner_speed_rad_s, dist.residual)
+        start = "cold"
     res = BearingFrictionResult(
         drive_torque_Nm=f["drive_torque_Nm"],
         outer_ring_torque_Nm=f["outer_ring_torque_Nm"],
@@ -290,11 +321,55 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         cage_power_W=f["cage_power_W"],
         Lambda_min=dict(f["Lambda_min"]),
         phi_max=dict(f["phi_max"]),
-        converged=f["status"] == 0,
+        converged=not problems,
         runtime_s=dist.runtime_s + time.perf_counter() - t0,
-        cage_model=mode,
+        cage_model=used,
         roller_orbit_rad_s=np.asarray(f["roller_orbit_rad_s"]),
         roller_drift_m=f["roller_drift_m"],
         locked_rollers=f["locked_rollers"],
+        failure="; ".join(problems) if problems else None,
+        start=start,
     )
     return dist, res
+
+
+#: Tolerances of the plausibility gates every quasi-static point must pass to be called converged.
+GATE_TOLERANCES = {
+    "power_balance": 1e-3,     # |dissipated / input power - 1|
+    "torque_balance": 1e-3,    # |drive - outer-ring torque| / |drive torque| (the cage carries no net moment)
+    "load_residual": 1e-6,     # ring equilibrium residual / load scale
+}
+
+
+def plausibility_failures(f: dict, inner_speed_rad_s: float, load_residual: float) -> list[str]:
+    """The plausibility gates of one quasi-static friction solution; an empty list when it passes.
+
+    A point is converged only when its solvers reported convergence and its result is physical:
+    every torque and power finite, the friction torque opposing the rotation (drive torque times
+    speed > 0), the drive torque equal to the outer ring's reaction (no unbalanced moment left on
+    rollers or cage), the dissipated power equal to the input power (power balance), and the ring
+    in equilibrium; tolerances in :data:`GATE_TOLERANCES`. Each message names the residual.
+    """
+    out = []
+    T, T_o = f["drive_torque_Nm"], f["outer_ring_torque_Nm"]
+    P_in, P_d = f["power_input_W"], f["power_dissipated_W"]
+    if not all(math.isfinite(x) for x in (T, T_o, P_in, P_d, f["cage_speed_rad_s"])):
+        return [f"non-finite result (drive torque {T}, outer-ring torque {T_o}, power {P_in} / {P_d} W)"]
+    if f["status"] != 0:
+        out.append(f"a roller or cage balance did not converge (cage residual {f['cage_residual_Nm']:.3e} N m, "
+                   f"{f['locked_rollers']} roller(s) without a free-roller solution)")
+    if not T * inner_speed_rad_s > 0:
+        out.append(f"friction torque {T:.6g} N m does not oppose the rotation ({inner_speed_rad_s:.6g} rad/s)")
+    else:
+        tb = abs(T - T_o) / abs(T)
+        if tb > GATE_TOLERANCES["torque_balance"]:
+            out.append(f"torque balance: drive {T:.6g} N m, outer ring {T_o:.6g} N m (relative difference {tb:.3e}, "
+                       f"tolerance {GATE_TOLERANCES['torque_balance']:g})")
+        pb = P_d / P_in - 1.0
+        if abs(pb) > GATE_TOLERANCES["power_balance"]:
+            out.append(f"power balance: dissipated {P_d:.6g} W, input {P_in:.6g} W (error {pb:+.3e}, tolerance "
+                       f"{GATE_TOLERANCES['power_balance']:g})")
+    if not load_residual <= GATE_TOLERANCES["load_residual"]:
+        out.append(f"ring equilibrium residual {load_residual:.3e} of the load (tolerance "
+                   f"{GATE_TOLERANCES['load_residual']:g})")
+    return out

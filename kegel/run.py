@@ -72,8 +72,9 @@ class _Progress:
 
 
 def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: bool = True,
-              on_point: Callable[[dict[str, Any]], None] | None = None) -> RunResult:
-    """Solve every operating point of a scene and write the results (see the module docstring)."""
+              on_point: Callable[[dict[str, Any]], None] | None = None, write: bool = True) -> RunResult:
+    """Solve every operating point of a scene and write the results (see the module docstring);
+    ``write=False`` keeps them in memory only (no files, ``files`` empty)."""
     t_start = time.perf_counter()
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
@@ -84,7 +85,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     fid = scene.fidelity
     method = fid.slice_model
     rib_cells = _rib_cells(fid)
-    friction = load_friction()
+    friction = _friction(fid)
     model = bearing_model(g, b, m, slices=fid.slices, method=method)
     data = _core.quasi_static.BearingData(model)
     cfd_runs = _read_cfd_runs(scene)
@@ -99,6 +100,11 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
             continue
         dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
+        if not fr.converged:
+            # never warm-start the next point from a failed one
+            data = _core.quasi_static.BearingData(model)
+            print(f"kegel: point {i} (n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC) failed its "
+                  f"plausibility gates and is reported as failed: {fr.failure}", file=sys.stderr)
         state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
         hyd = None
         if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
@@ -114,6 +120,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
                        "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
         w = op.speed_rad_s
+        skf = _skf_point(scene, op, state, dist.axial_force_N)
         point = {
             **op.as_dict(),
             "friction_torque_Nm": fr.drive_torque_Nm,
@@ -133,6 +140,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "Lambda_min": fr.Lambda_min,
             "phi_max": fr.phi_max,
             "hydraulic": hyd_out,
+            "skf_catalogue_model": skf,
             "roller_azimuth_rad": dist.azimuth_rad.tolist(),
             "roller_outer_N": dist.outer_N.tolist(),
             "roller_inner_N": dist.inner_N.tolist(),
@@ -141,6 +149,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "ring_displacement_m": dist.ring_displacement_m.tolist(),
             "load_residual": dist.residual,
             "converged": fr.converged,
+            "failure": fr.failure,
+            "start": fr.start,
             "runtime_s": fr.runtime_s,
             "lubricant_state": state.as_dict(),
         }
@@ -150,6 +160,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
     bar.close()
     runtime = time.perf_counter() - t_start
+    if not write:
+        return RunResult(points=points, files={}, runtime_s=runtime)
     out.mkdir(parents=True, exist_ok=True)
     files = {
         "json": str(atomic_write_json(out / "results.json", {
@@ -157,6 +169,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                       "resolved": scene.resolved},
             "bearing": b.designation, "lubricant": scene.lubricant.name, "material": m.name,
             "friction_parameters": friction.name,
+            "rolling_resistance": friction.model_options(),
             "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
             "fidelity": {**fid.as_dict(), "solution_used": fid.solution,
                          **({"dynamic": scene.dynamic.as_dict()} if fid.solution == "dynamic" else {}),
@@ -172,6 +185,32 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
 
 
 AUTO_LEVELS = ("fast", "default", "fine")  # cheapest first; fine is the reference
+
+
+def _skf_point(scene: Scene, op, state, axial_N: float) -> dict[str, Any] | None:
+    """The SKF catalogue model's frictional moment at a point (an independent engineering model
+    beside kegel's: its rolling + sliding moment against kegel's contact friction, its drag
+    against the hydraulic loss), or None for a bearing series without SKF constants."""
+    from .correlations.skf import SERIES_CONSTANTS, skf_bearing, skf_friction
+
+    b = scene.bearing
+    if str(b.designation)[:3] not in SERIES_CONSTANTS:
+        return None
+    lub = scene.lubrication
+    oil = lub.oil_level_m if lub.mode == "oil_bath" and lub.oil_level_m > 0 else None
+    f = skf_friction(skf_bearing(b), speed_rad_s=abs(op.speed_rad_s),
+                     kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                     axial_load_N=abs(axial_N), radial_load_N=op.radial_load_N, oil_level_m=oil,
+                     lubrication="oil_bath" if lub.mode == "oil_bath" else "oil_air")
+    return {"rolling_sliding_Nm": f.rolling_sliding_Nm, "drag_Nm": f.drag_Nm, "total_Nm": f.total_Nm,
+            "phi_ish": f.phi_ish, "phi_rs": f.phi_rs, "verify": f.verify}
+
+
+def _friction(fid: "Fidelity"):
+    """The friction parameters with the scene's rolling-resistance options (``model.rolling_thermal``,
+    ``model.inlet_gap_ratio``)."""
+    return dataclasses.replace(load_friction(), rolling_thermal=fid.rolling_thermal,
+                               inlet_gap_ratio=fid.inlet_gap_ratio)
 
 
 def _rib_cells(fid: "Fidelity") -> int:
@@ -201,7 +240,7 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     """
     from .scene import FIDELITY_PRESETS
 
-    friction = load_friction()
+    friction = _friction(scene.fidelity)
     ops = scene.operating_points
     checks = [ops[0]] if len(ops) == 1 else [ops[0], ops[-1]]
     rows: dict[str, dict[str, Any]] = {}

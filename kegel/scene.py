@@ -102,7 +102,7 @@ _ALLOWED: dict[str, set[str]] = {
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
-              "cfd_results", "tolerance"},
+              "cfd_results", "tolerance", "rolling_thermal", "inlet_gap_ratio"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
@@ -148,6 +148,12 @@ class Fidelity:
     tolerance
         With ``fidelity = "auto"``: the largest deviation of the friction torque from the ``fine``
         level that the chosen preset may have (a fraction; default 0.01).
+    rolling_thermal
+        Thermal reduction of the EHL rolling resistance by inlet shear heating: ``"aihara"``
+        (default), ``"zhu_cheng"`` or ``"off"`` (see :class:`kegel.FrictionData`).
+    inlet_gap_ratio
+        Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
+        the inlet oil gap over the fully flooded film, >= 2; 0 (default) = fully flooded.
     """
 
     name: str
@@ -160,6 +166,8 @@ class Fidelity:
     hydraulic: str
     cfd_results: str | None = None
     tolerance: float | None = None
+    rolling_thermal: str = "aihara"
+    inlet_gap_ratio: float = 0.0
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -188,6 +196,7 @@ _CHOICES = {
     "rib_model": ("cell", "hertz"),
     "solution": ("quasi_static", "dynamic"),
     "hydraulic": ("none", "correlation", "cfd"),
+    "rolling_thermal": ("aihara", "zhu_cheng", "off"),
 }
 
 
@@ -533,6 +542,12 @@ def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> 
         if key in model:
             opts[key] = reader.choice(model, key, "model", choices, None)
             custom = True
+    if "inlet_gap_ratio" in model:
+        v = model["inlet_gap_ratio"]
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not (v == 0 or 2 <= v < 1e9):
+            raise reader.error("model.inlet_gap_ratio", v,
+                               "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's starvation range)")
+        opts["inlet_gap_ratio"] = float(v)
     if opts["solution"] == "dynamic":
         for key, value in DYNAMIC_PRESETS[preset].items():
             if key not in model:

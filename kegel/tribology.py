@@ -29,6 +29,7 @@ from .geometry import BearingGeometry
 T = _core.tribology
 
 __all__ = [
+    "ROLLING_THERMAL_MODELS",
     "FrictionData",
     "ContactFriction",
     "available_friction_sets",
@@ -62,10 +63,28 @@ class FrictionData:
     gold_C1_Pa_K2: float = 0.0
     gold_C2_Pa_K: float = 0.0
     damping_time_s: float = 0.0   # dynamic model: d_max = damping_time x contact stiffness (Eq. 2)
+    #: Thermal reduction of the EHL rolling force by inlet shear heating (a model option, set
+    #: from a scene's ``model.rolling_thermal``): ``"aihara"`` (default; Aihara 1987,
+    #: phi_T = 1/(1 + 0.29 L^0.78)), ``"zhu_cheng"`` (the film factor of Eq. 12, as Zhou and
+    #: Hoeprich 1991 apply it to the rolling force) or ``"off"``.
+    rolling_thermal: str = "aihara"
+    #: Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
+    #: inlet oil gap over the fully flooded film, >= 2; 0 = fully flooded (default).
+    inlet_gap_ratio: float = 0.0
+
+    def model_options(self) -> dict[str, Any]:
+        """The rolling-resistance model options, as recorded with every result."""
+        return {"rolling_thermal": self.rolling_thermal, "inlet_gap_ratio": self.inlet_gap_ratio}
 
     def core(self, lubricant: LubricantData) -> "_core.tribology.FrictionParameters":
-        """Checked C++ parameters, with the limiting shear stress of ``lubricant``."""
+        """Checked C++ parameters, with the limiting shear stress of ``lubricant`` and the
+        rolling-resistance options of this object."""
+        if self.rolling_thermal not in ROLLING_THERMAL_MODELS:
+            raise KegelInputError("<argument>", "rolling_thermal", self.rolling_thermal,
+                                  f"one of {', '.join(ROLLING_THERMAL_MODELS)}")
         v = T.FrictionParameterValues()
+        v.rolling_thermal = getattr(T.RollingThermal, self.rolling_thermal)
+        v.inlet_gap_ratio = self.inlet_gap_ratio
         v.tau_L0_Pa = lubricant.limiting_shear_stress_tau0_Pa
         v.gamma_L = lubricant.limiting_shear_stress_gamma
         for name in ("mu_s", "mu_d", "v_s_m_s", "v_d_m_s", "c_r", "e_r", "a_v", "d_max_Ns_m", "delta_max_m",
@@ -75,6 +94,10 @@ class FrictionData:
             return T.FrictionParameters(v)
         except ValueError as exc:
             raise KegelInputError(self.source_file, "(parameters)", "", str(exc)) from None
+
+
+#: Thermal reductions of the EHL rolling force (FrictionData.core's rolling_thermal).
+ROLLING_THERMAL_MODELS = ("aihara", "zhu_cheng", "off")
 
 
 @lru_cache(maxsize=16)

@@ -450,8 +450,9 @@ def test_under_combined_load_the_rollers_do_not_touch_the_cage(setup):
     """32216, Table 2 loads (Fa 6 kN, Fr 6.5 kN), 2000 rpm: the rollers move only microns in
     their pockets and never touch the cage, so the dynamic torque matches the quasi-static one
     with free rollers (the default); the quasi-static pocket model (each roller's
-    circumferential load on its pocket, Eq. 37) adds about 15 % here. The dynamic model is why
-    the quasi-static default is the free-roller model."""
+    circumferential load on its pocket, Eq. 37) adds about 3 % here (15 % before the rolling
+    resistance was corrected, when sliding friction dominated). The dynamic model is why the
+    quasi-static default is the free-roller model."""
     g, b, m, lub, fr = setup
     w = 2000 * RPM
     kw = dict(temperature_K=323.15, inner_speed_rad_s=w, axial_N=6000.0, radial_N=6500.0, slices=8,
@@ -463,7 +464,7 @@ def test_under_combined_load_the_rollers_do_not_touch_the_cage(setup):
                  radial_N=6500.0, slices=8, output_interval_s=4e-4, threads=2)
     assert r.series["roller_cage_N"].max() == 0.0
     assert r.steady["outer_ring_torque_Nm"] == pytest.approx(free.outer_ring_torque_Nm, rel=0.02)
-    assert with_pockets.outer_ring_torque_Nm > 1.1 * r.steady["outer_ring_torque_Nm"]
+    assert with_pockets.outer_ring_torque_Nm > 1.02 * r.steady["outer_ring_torque_Nm"]
 
 
 def test_a_state_of_the_wrong_length_names_both_lengths(setup):

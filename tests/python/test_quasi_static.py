@@ -201,19 +201,21 @@ def test_free_rollers_balance_each_roller_without_pocket_forces(b32216, oil):
     assert abs(f.power_balance_error) < 5e-3
     orbit = f.roller_orbit_rad_s
     assert dist.inner_N.max() > 1.5 * dist.inner_N.min()  # unequal roller loads round the bearing
-    # the orbits differ from roller to roller, by little
+    # the orbits differ from roller to roller, by little (0.26 % at the corrected rolling
+    # resistance: the loaded rollers, braked by it, orbit slower than the lightly loaded ones)
     assert orbit.std() > 0.0
-    assert np.allclose(orbit, f.cage_speed_rad_s, rtol=1e-3)
+    assert np.allclose(orbit, f.cage_speed_rad_s, rtol=5e-3)
     # the cage speed is the harmonic mean over the azimuths (unloaded rollers move with the cage)
     assert len(orbit) / np.sum(1.0 / orbit) == pytest.approx(f.cage_speed_rad_s, rel=1e-12)
-    # the drift over a revolution, rebuilt from the orbits, and far inside the pocket clearance
+    # the drift over a revolution, rebuilt from the orbits, inside the pocket clearance (122 um of
+    # 340 um; 2 um before the rolling resistance was corrected)
     lead = np.cumsum(2 * np.pi / len(orbit) * 0.5 * g.pitch_diameter_m * (1 - f.cage_speed_rad_s / orbit))
     span = max(lead.max(), 0.0) - min(lead.min(), 0.0)
     assert f.roller_drift_m == pytest.approx(span, rel=1e-9)
-    assert 0.0 < f.roller_drift_m < 0.1 * g.cage_pocket_clearance_circumferential_m
-    # the pocket model loads the pockets instead and costs more torque
+    assert 0.0 < f.roller_drift_m < 0.5 * g.cage_pocket_clearance_circumferential_m
+    # the pocket model loads the pockets instead and costs more torque (+6 % here)
     _, pocket = bearing_friction(g, b, m, lub, fr, cage="pocket", **kw)
-    assert pocket.drive_torque_Nm > 1.1 * f.drive_torque_Nm
+    assert pocket.drive_torque_Nm > 1.02 * f.drive_torque_Nm
     # axisymmetric load: every roller alike, free rollers orbit with the cage
     _, ax = bearing_friction(g, b, m, lub, fr, cage=True, **{**kw, "radial_N": 0.0})
     assert ax.roller_drift_m == 0.0 and np.allclose(ax.roller_orbit_rad_s, ax.cage_speed_rad_s, rtol=1e-14)
