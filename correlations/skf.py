@@ -441,6 +441,18 @@ def skf_drag_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_viscos
     return _drag(bearing, w * _RPM, nu * _NU_MM2_S, H, edition)
 
 
+def _loaded_point(bearing: SkfBearing, speed_rad_s: float, nu_m2_s: float, Fa_N: float,
+                  Fr_N: float) -> tuple[float, float, float, float]:
+    """Checked operating point of the rolling and sliding terms in the catalogue's units
+    (n in r/min, nu in mm^2/s, forces in N); the bearing's series constants must exist."""
+    w = _require("speed_rad_s", speed_rad_s, "rad/s")
+    nu = _require("kinematic_viscosity_m2_s", nu_m2_s, "m^2/s", positive=True)
+    Fa = _require("axial_load_N", Fa_N, "N")
+    Fr = _require("radial_load_N", Fr_N, "N")
+    _load_constants(bearing)
+    return w * _RPM, nu * _NU_MM2_S, Fa, Fr
+
+
 def skf_rolling_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_viscosity_m2_s: float,
                        axial_load_N: float, radial_load_N: float = 0.0,
                        lubrication: str = "oil_bath") -> tuple[float, float, float]:
@@ -470,13 +482,9 @@ def skf_rolling_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_vis
         A negative or NaN input, a viscosity <= 0, an unknown lubrication, a bearing without
         Y or series constants.
     """
-    w = _require("speed_rad_s", speed_rad_s, "rad/s")
-    nu = _require("kinematic_viscosity_m2_s", kinematic_viscosity_m2_s, "m^2/s", positive=True)
-    Fa = _require("axial_load_N", axial_load_N, "N")
-    Fr = _require("radial_load_N", radial_load_N, "N")
+    n, nu, Fa, Fr = _loaded_point(bearing, speed_rad_s, kinematic_viscosity_m2_s, axial_load_N, radial_load_N)
     _choice("lubrication", lubrication, K_RS)
-    _load_constants(bearing)
-    M, phi_ish, phi_rs = _rolling(bearing, w * _RPM, nu * _NU_MM2_S, Fa, Fr, K_RS[lubrication])
+    M, phi_ish, phi_rs = _rolling(bearing, n, nu, Fa, Fr, K_RS[lubrication])
     return M * _NM, phi_ish, phi_rs
 
 
@@ -505,12 +513,8 @@ def skf_sliding_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_vis
     KegelInputError
         A negative or NaN input, a viscosity <= 0, a bearing without Y or series constants.
     """
-    w = _require("speed_rad_s", speed_rad_s, "rad/s")
-    nu = _require("kinematic_viscosity_m2_s", kinematic_viscosity_m2_s, "m^2/s", positive=True)
-    Fa = _require("axial_load_N", axial_load_N, "N")
-    Fr = _require("radial_load_N", radial_load_N, "N")
-    _load_constants(bearing)
-    M, phi_bl, mu_sl = _sliding(bearing, w * _RPM, nu * _NU_MM2_S, Fa, Fr)
+    n, nu, Fa, Fr = _loaded_point(bearing, speed_rad_s, kinematic_viscosity_m2_s, axial_load_N, radial_load_N)
+    M, phi_bl, mu_sl = _sliding(bearing, n, nu, Fa, Fr)
     return M * _NM, phi_bl, mu_sl
 
 
