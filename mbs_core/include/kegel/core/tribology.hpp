@@ -36,7 +36,8 @@ inline double gold_compression_temperature_K(double T0_K, double p_Pa, double C1
 // Film thickness
 // ---------------------------------------------------------------------------------------------
 
-/// Moes' central film thickness of a line contact (Venner-Lubrecht form, the paper's ref. [14]).
+/// Moes' central film thickness of a line contact (Moes 1992, in the form of Venner and Lubrecht 2000;
+/// ../shared/reference/known_values.md; the seed's ref. [14] is Kannel and Walowit, not Moes).
 ///
 /// @param eta0_Pas        viscosity at the inlet temperature and ambient pressure
 /// @param u_sum_m_s       sum velocity u1 + u2 (twice the mean entrainment speed), > 0
