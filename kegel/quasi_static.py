@@ -264,11 +264,16 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     one that still fails is returned with ``converged = False`` and the residuals in ``failure``.
     """
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
-    data_given = data is not None
+    warm = data is not None
     data = data or Q.BearingData(model)
     cage0 = pure_rolling_cage_speed(g, inner_speed_rad_s)
-    dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
-                             misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0, model=model, data=data)
+
+    def distribute(data) -> LoadDistribution:
+        return load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                                 radial_N=radial_N, misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0,
+                                 model=model, data=data)
+
+    dist = distribute(data)
     t0 = time.perf_counter()
     T = _core.tribology
     E = _core.reduced_modulus_Pa(material.core, material.core)
@@ -285,8 +290,6 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         return Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant),
                                            race, rib, rib_cells, getattr(Q.CageModel, mode))
 
-    warm = data_given
-
     def solve(data) -> tuple[str, dict]:
         f = evaluate(mode, data)
         m = mode
@@ -302,9 +305,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     if problems and warm:
         # a warm start must never decide the answer: solve the point again from a fresh state
         data = Q.BearingData(model)
-        dist = load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
-                                 radial_N=radial_N, misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0,
-                                 model=model, data=data)
+        dist = distribute(data)
         used, f = solve(data)
         problems = plausibility_failures(f, inner_speed_rad_s, dist.residual)
         start = "cold"

@@ -70,6 +70,7 @@ from ._toml import read_toml
 from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
 from .errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
+from .tribology import ROLLING_THERMAL_MODELS
 from .units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
@@ -196,7 +197,7 @@ _CHOICES = {
     "rib_model": ("cell", "hertz"),
     "solution": ("quasi_static", "dynamic"),
     "hydraulic": ("none", "correlation", "cfd"),
-    "rolling_thermal": ("aihara", "zhu_cheng", "off"),
+    "rolling_thermal": ROLLING_THERMAL_MODELS,
 }
 
 

@@ -33,8 +33,8 @@ from typing import Any
 from .errors import KegelInputError
 from .io import atomic_write_json, provenance
 
-__all__ = ["DATASET_DIR", "TARGET_MEAN", "TARGET_WORST", "Comparison", "measured_datasets", "run_validation",
-           "skf_comparisons"]
+__all__ = ["DATASET_DIR", "TARGET_MEAN", "TARGET_WORST", "Comparison", "measured_datasets", "print_report",
+           "run_validation", "skf_comparisons"]
 
 DATASET_DIR = Path(__file__).resolve().parent / "data" / "validation"
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
@@ -104,15 +104,13 @@ def measured_datasets() -> list[Comparison]:
         citation = f"{', '.join(cit.get('authors', []))}: {cit.get('title', '?')}, {cit.get('journal', '')} " \
                    f"{cit.get('volume', '')} ({cit.get('year', '')})"
         c = Comparison(name=str(raw.get("dataset", path.stem)), reference="measured", citation=citation.strip())
-        series = raw.get("measured_series", [])
-        for s in series:
-            torque = s.get("torque_Nm") or s.get("torque_Nmm") or []
-            if torque:  # a digitised series: solving it needs its bearing's internal geometry (not yet)
-                c.note = "measured points present but not yet runnable: " + str(path.name)
-        if int(raw.get("measured_points_in_text", 0)) == 0:
-            figs = ", ".join(s.get("figure", "?") for s in series)
+        n_points = int(raw.get("measured_points_in_text", 0))
+        if n_points == 0:
+            figs = ", ".join(s.get("figure", "?") for s in raw.get("measured_series", []))
             c.note = (f"no measured torque is printed in the paper's text or tables; the measurements are in "
                       f"figures ({figs}) that could not be read here: not validated (see {DATASET_DIR.name}/README.md)")
+        else:  # solving recorded points needs the bearing's internal geometry, not yet in the files
+            c.note = f"{n_points} measured points recorded but not yet runnable ({path.name}): not validated"
         out.append(c)
     return out
 
@@ -155,10 +153,8 @@ def run_validation(output_dir: str | Path, *, progress: bool = True) -> dict[str
     comps = measured_datasets()
     skf, runs = skf_comparisons(progress=progress)
     comps += skf
-    from .tribology import load_friction
-
-    result = {"provenance": provenance(), "model_options": load_friction().model_options(),
-              "runs": runs, "comparisons": [c.as_dict() for c in comps]}
+    # each run records its scene's fidelity, model options (rolling_thermal, inlet_gap_ratio) included
+    result = {"provenance": provenance(), "runs": runs, "comparisons": [c.as_dict() for c in comps]}
     plots = {}
     for i, c in enumerate(comps):
         if c.reference_Nm:
