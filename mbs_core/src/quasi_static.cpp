@@ -136,20 +136,38 @@ RollerEval eval_roller(const BearingModel& m, BearingData& d, std::vector<SliceG
   return r;
 }
 
-// Newton on one roller's 3 DOF for a fixed ring pose.
+// One roller's 3 DOF for a fixed ring pose: chord Newton, with a trust-region
+// (Levenberg-Marquardt) step when the Newton step is too long or does not reduce the residual.
+//
+// An unloaded roller touches the cup only (centrifugal force): the cup's normal force has a
+// component along the cup generator that pushes the roller towards the large end, and nothing
+// but the weak stand-in spring resists a slide along the cup until the roller meets the rib. The
+// Jacobian is then singular in that direction: the Newton step is huge, and scaling the whole
+// step down to the step limit also scaled away the correction of the well-conditioned normal
+// direction, so the roller stalled where the iteration happened to leave it (Table 3 at 15 kN:
+// unloaded rollers with 17 N or 182 N of cup load and up to 160 N of unbalanced force, by the
+// sweep's history; the friction torque moved by 5 %). The trust-region step corrects the normal
+// direction fully and walks along the cup by at most the trust radius per step, accepting steps
+// that do not increase the residual (the slide is a plateau of the residual) until the rib
+// takes the roller.
 RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<SliceGeometry>& geo, std::vector<double>& e,
                         int j, const Pose& ring, double omega_c, double scale) {
   const double L = m.values().roller_length_m;
   Eigen::Vector3d x(d.rollers[j].u_m, d.rollers[j].w_m, d.rollers[j].tilt_rad);
   const Eigen::Vector3d h(1e-9, 1e-9, 1e-9 / L);
   const Eigen::Vector3d limit(5e-6, 5e-6, 5e-6 / L);
+  const Eigen::Vector3d D(1.0, 1.0, L);  // scaled unknowns D x: metres
   RollerEval r = eval_roller(m, d, geo, e, j, ring, x, omega_c);
   RollerState& st = d.rollers[j];
   auto norm = [&](const Eigen::Vector3d& q) { return std::hypot(std::hypot(q[0], q[1]), q[2] / L); };
-  bool fresh = false;  // the Jacobian was computed at this iterate
-  for (int it = 0; it < 60; ++it) {
-    const double res = std::max({std::abs(r.residual[0]), std::abs(r.residual[1]), std::abs(r.residual[2]) / L});
-    if (res <= 1e-11 * scale) break;
+  auto res_max = [&](const Eigen::Vector3d& q) {
+    return std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]) / L});
+  };
+  bool fresh = false;         // the Jacobian was computed at this iterate
+  double radius = 5e-6;       // trust radius of the Levenberg-Marquardt step (scaled, m)
+  constexpr double kRadiusMax = 2e-4, kRadiusMin = 1e-13;
+  for (int it = 0; it < 300; ++it) {
+    if (res_max(r.residual) <= 1e-11 * scale) break;
     if (!st.has_jacobian) {
       for (int k = 0; k < 3; ++k) {
         Eigen::Vector3d xp = x;
@@ -159,28 +177,89 @@ RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<Slice
       st.has_jacobian = true;
       fresh = true;
     }
-    Eigen::Vector3d dx = st.jacobian.fullPivLu().solve(-r.residual);
-    if (!dx.allFinite()) {
-      st.has_jacobian = false;
-      if (fresh) break;
-      continue;
-    }
-    const double s = std::max({std::abs(dx[0]) / limit[0], std::abs(dx[1]) / limit[1], std::abs(dx[2]) / limit[2], 1.0});
-    dx /= s;
     const double n0 = norm(r.residual);
-    RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + dx, omega_c);
-    if (norm(rn.residual) > 0.5 * n0 && !fresh) {
+    const Eigen::Vector3d dx = st.jacobian.fullPivLu().solve(-r.residual);
+    const bool short_step = dx.allFinite() && (dx.cwiseAbs().array() <= limit.array()).all();
+    if (short_step) {
+      RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + dx, omega_c);
+      if (norm(rn.residual) <= 0.5 * n0 || (fresh && norm(rn.residual) < n0)) {
+        x += dx;
+        r = rn;
+        fresh = false;
+        continue;
+      }
+    }
+    if (!fresh) {
       // the reused Jacobian no longer serves: take a fresh one at this iterate
       st.has_jacobian = false;
       continue;
     }
-    double step = 1.0;
-    for (int b = 0; b < 12 && norm(rn.residual) >= n0; ++b) {  // backtracking (fresh Jacobian)
-      step *= 0.5;
-      rn = eval_roller(m, d, geo, e, j, ring, x + step * dx, omega_c);
+    // trust-region step with the fresh Jacobian, in the scaled unknowns y = D x and the scaled
+    // residual (force, force, moment / L)
+    Eigen::Matrix3d Js = st.jacobian;
+    for (int k = 0; k < 3; ++k) Js.col(k) /= D[k];
+    Js.row(2) /= L;
+    Eigen::Vector3d rs = r.residual;
+    rs[2] /= L;
+    const Eigen::Matrix3d A = Js.transpose() * Js;
+    const Eigen::Vector3d g = Js.transpose() * rs;
+    const double a_scale = A.diagonal().maxCoeff();
+    if (!(a_scale > 0.0) || !std::isfinite(a_scale)) break;
+    auto lm_step = [&](double lambda) {
+      return Eigen::Vector3d((A + lambda * a_scale * Eigen::Matrix3d::Identity()).ldlt().solve(-g));
+    };
+    bool accepted = false;
+    while (!accepted && radius >= kRadiusMin) {
+      // the smallest damping (by bisection in log space) whose step fits the trust radius
+      double lo = 1e-14, hi = 1e4;
+      Eigen::Vector3d dy = lm_step(lo);
+      if (!(dy.allFinite() && dy.norm() <= radius)) {
+        for (int b = 0; b < 60; ++b) {
+          const double mid = std::sqrt(lo * hi);
+          dy = lm_step(mid);
+          if (dy.allFinite() && dy.norm() <= radius) hi = mid; else lo = mid;
+        }
+        dy = lm_step(hi);
+      }
+      const Eigen::Vector3d step = dy.cwiseQuotient(D);
+      RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + step, omega_c);
+      if (rn.ok && norm(rn.residual) <= n0 * (1.0 + 1e-12)) {
+        x += step;
+        r = rn;
+        accepted = true;
+        radius = std::min(2.0 * radius, kRadiusMax);
+      } else {
+        radius *= 0.25;
+      }
     }
-    x += step * dx;
-    r = rn;
+    if (!accepted) {
+      // No step of the linearised least-squares problem reduces the residual: the roller sits
+      // on a plateau (the slide along the cup, where the Jacobian has no stiffness). Follow the
+      // net force (the steepest descent of the potential energy of contacts and centrifugal
+      // force) while it keeps pointing the same way, doubling the step after each accepted one
+      // and shortening it when the force reverses (the roller has met the rib).
+      const Eigen::Vector3d dir = rs / rs.norm();
+      double len = 5e-6;
+      bool moved = false;
+      for (int k = 0; k < 80 && len >= kRadiusMin; ++k) {
+        const Eigen::Vector3d step = (len * dir).cwiseQuotient(D);
+        RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + step, omega_c);
+        Eigen::Vector3d rsn = rn.residual;
+        rsn[2] /= L;
+        if (rn.ok && rsn.allFinite() && rsn.dot(dir) >= 0.0) {
+          x += step;
+          r = rn;
+          moved = true;
+          len = std::min(2.0 * len, kRadiusMax);
+          if (rsn.dot(dir) < 0.5 * rs.dot(dir)) break;  // the force falls: another contact takes over
+        } else {
+          len *= 0.25;
+        }
+      }
+      if (!moved) break;
+      radius = 5e-6;
+    }
+    st.has_jacobian = false;  // a fresh Jacobian at the new iterate
     fresh = false;
   }
   d.rollers[j].u_m = x[0];
