@@ -7,6 +7,10 @@ level takes about 15 minutes); run it as
 
     .venv/bin/python benchmarks/cfd_mesh_levels.py [tiny small ...]
 
+With three or more levels, the three finest give the Richardson extrapolation and the grid
+convergence index of the loss torque, the inner ring's torque and the angular-momentum balance
+(:mod:`kegel.cfd_cases.richardson`, Celik et al. 2008).
+
 Output: benchmarks/results/cfd_mesh_levels.json and .png. The case folders are the ones
 ``kegel cfd run`` uses (results/cfd/32208_2000rpm_flooded_50C_<level>, not kept in git), so
 cases already run are resumed and only re-read.
@@ -46,15 +50,38 @@ def main(levels: list[str]) -> int:
     for r in rows:
         r["deviation_inner_ring"] = r["inner_ring_Nm"] / ref["inner_ring_Nm"] - 1
         r["deviation_loss_torque"] = r["loss_torque_Nm"] / ref["loss_torque_Nm"] - 1
+    richardson = {}
+    if len(rows) >= 3:
+        from kegel.cfd_cases.richardson import richardson_three_levels
+
+        three = rows[-3:][::-1]  # finest first
+        for key in ("loss_torque_Nm", "inner_ring_Nm", "angular_momentum_balance"):
+            try:
+                richardson[key] = richardson_three_levels([r[key] for r in three], [r["cells"] for r in three]).as_dict()
+            except ValueError as exc:
+                richardson[key] = {"error": str(exc)}
     out = HERE / "results"
     out.mkdir(exist_ok=True)
-    atomic_write_json(out / "cfd_mesh_levels.json", {"reference_level": ref["level"], "rows": rows})
+    import kegel
+    from kegel.io import provenance
+
+    atomic_write_json(out / "cfd_mesh_levels.json", {
+        "command": "benchmarks/cfd_mesh_levels.py " + " ".join(levels), "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded",
+        "reference_level": ref["level"], "rows": rows, "richardson": richardson,
+        "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"{'level':<7}{'cells':>9}{'mesh s':>8}{'run s':>8}{'s/it':>7}{'iters':>7}"
           f"{'M_IR mN m':>11}{'loss mN m':>11}{'dev loss':>10}{'balance':>9}")
     for r in rows:
         print(f"{r['level']:<7}{r['cells']:>9}{r['mesh_time_s']:>8.1f}{r['runtime_s']:>8.0f}{r['s_per_iteration']:>7.2f}"
               f"{r['iterations']:>7.0f}{1e3 * r['inner_ring_Nm']:>11.2f}{1e3 * r['loss_torque_Nm']:>11.2f}"
               f"{100 * r['deviation_loss_torque']:>9.1f}%{100 * r['angular_momentum_balance']:>8.1f}%")
+    for key, rr in richardson.items():
+        if "error" in rr:
+            print(f"Richardson {key}: {rr['error']}")
+            continue
+        print(f"Richardson {key}: finest {rr['phi'][0]:.5g}, extrapolated {rr['phi_extrapolated']:.5g}, apparent order "
+              f"{rr['apparent_order']:.3g} ({rr['convergence']}), GCI_fine {100 * rr['gci_fine']:.2f} % "
+              f"(+-{rr['uncertainty']:.3g}){'; ' + '; '.join(rr['notes']) if rr['notes'] else ''}")
     try:
         import matplotlib
 
