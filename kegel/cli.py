@@ -233,14 +233,36 @@ def _cmd_losses(args: argparse.Namespace) -> int:
                 "mean_diameter_m": sb.mean_diameter_m, "width_B_m": sb.width_m,
                 "rolling_sliding": "computed" if contact_check else "no SKF series constants for this bearing",
                 "verify": True}
+    # the cost of each answer: the correlations' evaluation time per point (median of 200)
+    import statistics
+    import time as _time
+
+    def _cost(fn) -> float:
+        times = []
+        for _ in range(200):
+            t0 = _time.perf_counter()
+            fn()
+            times.append(_time.perf_counter() - t0)
+        return statistics.median(times)
+
+    w_mid, h_mid = float(speeds[len(speeds) // 2]), levels[0][1]
+    costs = {"liebrecht_s": _cost(lambda: hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w_mid,
+                                                            oil_level_m=h_mid))}
+    if contact_check:
+        costs["skf_s"] = _cost(lambda: skf_friction(sb, speed_rad_s=abs(w_mid),
+                                                    kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                                                    axial_load_N=fa, radial_load_N=fr, oil_level_m=h_mid,
+                                                    edition=args.skf_edition))
+    cfd_rows = _cfd_loss_rows(args.cfd or [], bearing, lub.name, T, g, state, sb, contact_check, args.skf_edition,
+                              [(t, h) for t, h in levels])
     plot_path = None
     if args.plot:
-        plot_path = _plot_losses(rows, skf_rows, g, lub.name, T, Path(args.plot))
+        plot_path = _plot_losses(rows, skf_rows, g, lub.name, T, Path(args.plot), cfd_rows)
     if args.format == "json":
         _json_out({"bearing": bearing.designation, "lubricant": lub.name, "temperature_K": T,
                    "units": "SI (N m, m); Liebrecht's Eq. 38-40 take the speeds in 1/min; SKF in catalogue units inside",
-                   "skf": skf_note, "points": rows + skf_rows, "side_by_side": side,
-                   "plot": str(plot_path) if plot_path else None})
+                   "skf": skf_note, "points": rows + skf_rows, "side_by_side": side, "cfd": cfd_rows,
+                   "cost_per_point_s": costs, "plot": str(plot_path) if plot_path else None})
         return 0
     print(f"Hydraulic losses of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC, torques in N mm")
     print("  Liebrecht: seed paper Eq. 38-40, speeds in 1/min. SKF: catalogue drag moment "
@@ -259,13 +281,76 @@ def _cmd_losses(args: argparse.Namespace) -> int:
                  [(f"{r['oil_level']} ({r['oil_level_m'] * 1e3:.1f} mm)", r["speed_rpm"], mm(r["drag_rollers_Nm"]),
                    mm(r["churning_outer_ring_Nm"]), mm(r["churning_inner_ring_Nm"]), mm(r["total_Nm"]),
                    mm(k["drag_Nm"]), mm(k["rolling_sliding_Nm"])) for r, k in zip(rows, skf_rows)])
+    cost_text = f"Liebrecht {1e6 * costs['liebrecht_s']:.0f} us"
+    if "skf_s" in costs:
+        cost_text += f", SKF {1e6 * costs['skf_s']:.0f} us"
+    print(f"  cost per point (median of 200 evaluations): {cost_text}")
+    if cfd_rows:
+        print("CFD results at the same bearing, lubricant and temperature (kegel cfd run; the correlations "
+              "evaluated at each result's own speed and oil level), torques in N mm:")
+        _print_table(("oil level", "n [rpm]", "mesh", "cells", "CFD loss", "balance [%]", "Liebrecht", "SKF drag",
+                      "CFD wall time [min]", "file"),
+                     [(c["oil_level"], c["speed_rpm"], c["mesh"], c["cells"], mm(c["loss_torque_Nm"]),
+                       None if c["angular_momentum_balance"] is None else 100 * c["angular_momentum_balance"],
+                       mm(c["liebrecht_total_Nm"]), mm(c["skf_drag_Nm"]),
+                       None if c["wall_time_s"] is None else c["wall_time_s"] / 60, c["file"]) for c in cfd_rows])
+    elif args.cfd:
+        print(f"no CFD result of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC under {', '.join(args.cfd)}")
     if plot_path:
         print(f"plot written to {plot_path}")
     return 0
 
 
+def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state, sb, contact_check: bool,
+                   edition: str, levels: list[tuple[str, float]]) -> list[dict[str, Any]]:
+    """The ``kegel cfd run`` results under ``paths`` for this bearing, lubricant and temperature,
+    each with the Liebrecht and SKF answers at its own speed and oil level and its wall time
+    (solver run plus meshing; the whole chain for a run started on a coarser mesh)."""
+    import json as _json
+
+    from .correlations import hydraulic_torques
+    from .correlations.skf import skf_drag_moment
+    from .coupling.cfd_results import TEMPERATURE_TOLERANCE_K, read_cfd_results
+
+    out = []
+    for path in paths:
+        for f, data in read_cfd_results(path, source="command line", key="--cfd"):
+            pt = data["point"]
+            if (pt.get("bearing") != bearing.designation or pt.get("lubricant") != lubricant
+                    or abs(pt.get("temperature_K", 0.0) - T) > TEMPERATURE_TOLERANCE_K):
+                continue
+            w = float(pt["speed_rad_s"])
+            h_cfd = pt.get("oil_level_m")
+            flooded = h_cfd is None
+            h = bearing.outer_diameter_m if flooded else float(h_cfd)  # the correlations' flooded level
+            name = "flooded" if flooded else next(
+                (t for t, lv in levels if lv is not None and abs(lv - h) <= 1e-4), f"{1e3 * h:.1f} mm")
+            lie = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=w, oil_level_m=h)
+            skf = skf_drag_moment(sb, speed_rad_s=abs(w), kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                                  oil_level_m=h, edition=edition)
+            meta_file = f.parent / "kegel-case.json"
+            wall = data.get("chain_wall_time_s")
+            if wall is None and data.get("runtime_s") is not None:
+                mesh_s = 0.0
+                if meta_file.is_file():
+                    try:
+                        mesh_s = float(_json.loads(meta_file.read_text()).get("mesh_time_s") or 0.0)
+                    except (OSError, ValueError):
+                        mesh_s = 0.0
+                wall = float(data["runtime_s"]) + mesh_s
+            bal = (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque")
+            out.append({"file": str(f), "oil_level": name, "oil_level_m": None if flooded else h,
+                        "speed_rpm": w * 30 / math.pi, "mesh": data["fidelity"].get("mesh"),
+                        "cells": data["fidelity"].get("cells"), "loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
+                        "steady": data.get("steady"), "angular_momentum_balance": bal,
+                        "liebrecht_total_Nm": lie.total_Nm, "skf_drag_Nm": math.copysign(skf.drag_Nm, w),
+                        "wall_time_s": wall})
+    out.sort(key=lambda c: (c["oil_level"], c["speed_rpm"], c["cells"] or 0))
+    return out
+
+
 def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, lubricant: str, T: float,
-                 path: Path) -> Path:
+                 path: Path, cfd_rows: list[dict[str, Any]] | None = None) -> Path:
     import os
     import tempfile
 
@@ -283,9 +368,16 @@ def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, 
                  label=f"Liebrecht, {level} ({sel[0]['oil_level_m'] * 1e3:.1f} mm)")
         ax1.plot([r["speed_rpm"] for r in ks], [r["drag_Nm"] * 1e3 for r in ks], marker="s", ls="--", color=colour,
                  label=f"SKF drag, {level}")
+    level_names = list(dict.fromkeys(r["oil_level"] for r in rows))
+    markers = {"tiny": "v", "small": "D", "fine": "*"}
+    for c in cfd_rows or []:
+        i = level_names.index(c["oil_level"]) if c["oil_level"] in level_names else len(level_names)
+        wall = "" if c["wall_time_s"] is None else f", {c['wall_time_s'] / 60:.0f} min"
+        ax1.plot([c["speed_rpm"]], [c["loss_torque_Nm"] * 1e3], ls="none", marker=markers.get(c["mesh"], "x"),
+                 ms=8, mfc="none", color=f"C{i % 10}", label=f"CFD {c['mesh']}, {c['oil_level']}{wall}")
     ax1.set_xlabel("shaft speed [rpm]")
     ax1.set_ylabel("hydraulic torque [N mm]")
-    ax1.set_title("total vs speed")
+    ax1.set_title("total vs speed (CFD: open markers)" if cfd_rows else "total vs speed")
     ax1.legend(fontsize=7)
     last = max(r["speed_rpm"] for r in rows)
     sel = [r for r in rows if r["speed_rpm"] == last]
@@ -473,6 +565,9 @@ def _parser() -> argparse.ArgumentParser:
                     help='radial load of the SKF rolling and sliding moments (default "0 kN")')
     lo.add_argument("--skf-edition", choices=("2013", "2005"), default="2013",
                     help="SKF catalogue edition of the drag equation (default 2013)")
+    lo.add_argument("--cfd", action="append", metavar="RESULTS",
+                    help="a kegel cfd results.json or a folder of them (repeatable): every result of this "
+                         "bearing, lubricant and temperature joins the table and the plot, with its wall time")
     common(lo)
     lo.set_defaults(func=_cmd_losses)
 
