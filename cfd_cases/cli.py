@@ -81,6 +81,13 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         if not (Path(init) / "kegel-case.json").is_file():
             raise KegelInputError(src, "--initial-from", init, "a kegel CFD case folder (with kegel-case.json)")
         extra["initial_from"] = str(Path(init).resolve())
+    if getattr(args, "housing_clearance", None):
+        s_m = parse_quantity(args.housing_clearance, "length", source=src, key="--housing-clearance")
+        if not s_m > 0.0:
+            raise KegelInputError(src, "--housing-clearance", args.housing_clearance, "a positive length, e.g. '6 mm'")
+        extra["housing_clearance_m"] = s_m
+    if getattr(args, "frame", "cage") != "cage":
+        extra["frame"] = args.frame
     return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
                     mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
                     max_iterations=args.max_iterations, max_wall_time_s=wall, **extra)
@@ -88,8 +95,11 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
 
 def _case_name(point, level_text: str) -> str:
     lvl = level_text.replace(" ", "")
+    extra = "" if point.frame == "cage" else f"_{point.frame}"
+    if point.housing_clearance_m is not None:
+        extra += f"_s{point.housing_clearance_m * 1e3:g}mm"
     return (f"{point.bearing}_{point.speed_rad_s * 30 / math.pi:.0f}rpm_{lvl}_"
-            f"{point.temperature_K - 273.15:.0f}C_{point.mesh}")
+            f"{point.temperature_K - 273.15:.0f}C_{point.mesh}{extra}")
 
 
 def _liebrecht(point) -> dict[str, float]:
@@ -338,6 +348,12 @@ def add_cfd_parser(sub, common) -> None:
                         help='relative tolerance of the steady-torque stop, e.g. 0.02 or "2 %%" (default 0.02); '
                              "0 runs to --end-time (oil bath) or --max-iterations (flooded)")
         sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
+        sp.add_argument("--frame", choices=("cage", "absolute"), default="cage",
+                        help="frozen-rotor frame: cage (MRF at the cage speed, default) or absolute (no MRF; "
+                             "a modelling-choice check)")
+        sp.add_argument("--housing-clearance",
+                        help='axial distance from the bearing faces to the housing walls, e.g. "6 mm" '
+                             "(default 0.25 T of the bearing)")
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")
         common(sp)

@@ -57,6 +57,7 @@ __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rot
            "loss_torque_series"]
 
 INITIAL_ROTATION_FRACTION = 0.01
+FRAMES = ("cage", "absolute")
 AIR_DENSITY_KG_M3 = 1.2          # at 20-50 degC, 1 bar
 AIR_KINEMATIC_VISCOSITY_M2_S = 1.6e-5
 OIL_AIR_SURFACE_TENSION_N_M = 0.03  # mineral oil against air, typical 0.03 N/m (e.g. Totten, Handbook of Lubrication)
@@ -79,6 +80,11 @@ class CfdPoint:
     lubricant: str = "FVA3"
     material: str = "bearing_steel"
     housing_clearance_m: float | None = None
+    # Frame of the steady (frozen-rotor) solution: "cage" - MRF over the whole oil space at the
+    # cage speed, so rollers and cage stand still in the frame (the default); "absolute" - no
+    # MRF, the same frozen geometry in the inertial frame with the walls' absolute velocities (a
+    # modelling-choice check: the two frozen-rotor readings bracket the effect of the frame)
+    frame: str = "cage"
     end_time_s: float | None = None        # oil bath: simulated time limit (default: 20 shaft revolutions)
     max_iterations: int = 2000            # flooded: SIMPLE iteration limit
     # Relative tolerance of the steady test (see _SteadyMonitor); 0 never stops on it (the run
@@ -98,6 +104,11 @@ class CfdPoint:
         return self.oil_level_m is None
 
     def validate(self) -> None:
+        if self.frame not in FRAMES:
+            raise ValueError(f"frame = {self.frame!r}: expected one of {', '.join(FRAMES)}")
+        if self.housing_clearance_m is not None and not (math.isfinite(self.housing_clearance_m)
+                                                         and self.housing_clearance_m > 0.0):
+            raise ValueError(f"housing_clearance_m = {self.housing_clearance_m}: expected a positive distance")
         if self.mesh not in MESH_LEVELS:
             raise ValueError(f"mesh = {self.mesh!r}: expected one of {', '.join(MESH_LEVELS)}")
         if self.n_procs < 1:
@@ -283,6 +294,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         "inner_omega_rad_s": omega_i, "cage_omega_rad_s": kin["cage_rad_s"],
         "density_kg_m3": lub.density_kg_m3, "kinematic_viscosity_m2_s": lub.kinematic_viscosity_m2_s,
         "p_ref_point": p_ref, "n_procs": point.n_procs,
+        "mrf_active": "yes" if point.frame == "cage" else "no",
     })
     tmp = case_dir.with_name(case_dir.name + ".preparing")
     render_case(template, tmp, params, overwrite=True)
@@ -293,7 +305,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     (tmp / "bearing.msh").unlink()
     quality = check_mesh(tmp)
     mesh_s = time.monotonic() - t0
-    _write_wall_velocities(tmp, kin, rollers)
+    _write_wall_velocities(tmp, kin, rollers, kin["cage_rad_s"] if point.frame == "cage" else 0.0)
     log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
         f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
     initial = None
@@ -401,9 +413,11 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
             "oil_volume_m3": oil_after, "oil_volume_of_the_level_m3": oil_before, "oil_volume_change": change}
 
 
-def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]]) -> None:
-    """Wall velocities of every patch at its face centres (see 0/U), and the initial oil
-    velocity; keeps the cell centres for the oil pictures."""
+def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]],
+                           frame_rad_s: float) -> None:
+    """Wall velocities of every patch at its face centres (see 0/U) for the MRF frame turning
+    at ``frame_rad_s`` (0: no MRF), and the initial oil velocity; keeps the cell centres for the
+    oil pictures."""
     run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0", log_name="writeCellCentres")
     cells = read_field(case / "0" / "C")
     for f in ("C", "Cx", "Cy", "Cz"):
@@ -426,7 +440,7 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
         raise FoamError(f"{case}: patches {sorted(missing)} have no wall motion or are not in the mesh")
     for name, (w, o) in motions.items():
         cf, sf = faces[name]
-        frame = omega_c * np.cross(ez, cf)
+        frame = frame_rad_s * np.cross(ez, cf)
         rel = np.cross(w, cf - o) - frame
         n = sf / np.linalg.norm(sf, axis=1)[:, None]
         u = frame + rel - n * np.einsum("ij,ij->i", rel, n)[:, None]

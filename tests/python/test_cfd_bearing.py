@@ -121,6 +121,41 @@ def test_cfd_run_rejects_bad_input():
         assert "--steady-tolerance" in err and repr(tol) in err and "fraction" in err
 
 
+def test_cfd_modelling_choice_options_are_checked():
+    assert "--housing-clearance" in _bad("--housing-clearance", "-2 mm")
+    assert "--frame" in _bad("--frame", "rotor")
+    for bad in (dict(frame="rotor"), dict(housing_clearance_m=0.0), dict(housing_clearance_m=math.nan)):
+        with pytest.raises(ValueError, match="frame|housing_clearance_m"):
+            CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=None, **bad).validate()
+
+
+@pytest.mark.openfoam
+def test_absolute_frame_case_has_no_mrf_and_absolute_wall_velocities(tmp_path):
+    """frame = "absolute": MRF inactive, and the wall velocities are the walls' own (tangential)
+    velocities: the cage turns at omega_c, so each of its faces gets the tangential part of
+    omega_c e_z x r (all of it on the conical shell, less on the pocket walls)."""
+    from kegel.cfd_cases.foam import read_boundary_geometry
+    from kegel.cfd_cases.run import prepare_case
+
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, frame="absolute",
+                 n_procs=1)
+    case = prepare_case(p, tmp_path / "abs", log=lambda s: None)
+    mrf = (case / "constant" / "MRFProperties").read_text()
+    assert "active      no;" in mrf
+    meta = json.loads((case / "kegel-case.json").read_text())
+    assert meta["point"]["frame"] == "absolute"
+    cf, _ = read_boundary_geometry(case)["cage"]
+    text = (case / "0" / "wallVelocity" / "cage").read_text()
+    rows = text[text.index("(\n") + 2:text.rindex(")")].split("\n")
+    u = np.array([[float(v) for v in r.strip("()").split()] for r in rows if r.strip()])
+    w_c = meta["kinematics"]["cage_rad_s"]
+    speed = np.linalg.norm(u, axis=1)
+    r = np.hypot(cf[:, 0], cf[:, 1])
+    ratio = speed / (abs(w_c) * r)
+    # the tangential part of omega_c e_z x r: equal on the shell faces, less on the pocket walls
+    assert np.all(ratio <= 1.0 + 1e-9) and np.median(ratio) == pytest.approx(1.0, abs=1e-3)
+
+
 def test_cfd_point_steady_tolerance_is_a_fraction():
     ok = CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=0.04,
                   steady_tolerance=0.0)
