@@ -133,6 +133,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
             "cage_speed_rpm": fr.cage_speed_rad_s * 30 / math.pi,
             "cage_slip": fr.cage_slip,
             "cage_model": fr.cage_model,
+            "pocket_fraction": fr.pocket_fraction,
             "roller_drift_m": fr.roller_drift_m,
             "torque_by_contact_Nm": fr.torque_by_contact_Nm(w),
             "torque_by_mechanism_Nm": fr.torque_by_mechanism_Nm(w),
