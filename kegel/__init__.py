@@ -23,7 +23,7 @@ from .data import (
     load_lubricant,
     load_material,
 )
-from .errors import KegelInputError
+from .errors import KegelInputError, KegelSolverError
 from .geometry import BearingGeometry, apex_residual, derive_geometry, envelope_violations
 from .lubricant import LubricantState, lubricant_state
 from .scene import OperatingPoint, Scene, load_scene
@@ -44,6 +44,7 @@ __all__ = [
     "DynamicResult",
     "FrictionData",
     "KegelInputError",
+    "KegelSolverError",
     "LubricantData",
     "LubricantState",
     "MaterialData",

@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Any, Sequence
 
 from .data import load_bearing, load_lubricant, load_material
-from .errors import KegelInputError
+from .errors import KegelInputError, KegelSolverError
 from .geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
 from .lubricant import lubricant_state
 from .scene import Scene, load_scene
@@ -603,6 +603,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("kegel: interrupted", file=sys.stderr)
         return 130
+    except KegelSolverError as exc:
+        print(f"kegel: solver failed: {exc}", file=sys.stderr)
+        return 1
     except RuntimeError as exc:
         from .cfd_cases.foam import FoamError, FoamInterrupted
 

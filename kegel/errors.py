@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-__all__ = ["KegelInputError"]
+__all__ = ["KegelInputError", "KegelSolverError"]
 
 
 class KegelInputError(ValueError):
@@ -49,3 +49,10 @@ class KegelInputError(ValueError):
         else:
             what = f"key '{key}' = {value!r}" if key else f"value {value!r}"
         super().__init__(f"{where}: {what}: expected {expected}")
+
+
+class KegelSolverError(RuntimeError):
+    """A solver found no solution for valid input (e.g. a load distribution that does not
+    converge: the loads exceed what the bearing can carry in the model). The message names the
+    operating point's loads and the residual that was left; the ``kegel`` command prints it as one
+    line and exits with status 1."""

@@ -21,7 +21,7 @@ import numpy as np
 
 from . import _core
 from .data import BearingData, MaterialData
-from .errors import KegelInputError
+from .errors import KegelInputError, KegelSolverError
 from .geometry import BearingGeometry
 from .tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
@@ -144,8 +144,10 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
     except ValueError as exc:
         raise KegelInputError("<argument>", "loads", (axial_N, axial_offset_m, radial_N), str(exc)) from None
     if status != 0:
-        raise RuntimeError(f"load distribution did not converge: ring residual {data.residual:.3e} of the load "
-                           f"after {data.iterations} iterations")
+        raise KegelSolverError(
+            f"load distribution did not converge (Fa = {axial_N} N, axial offset = {axial_offset_m} m, Fr = "
+            f"{radial_N} N, tilt moment = {tilt_moment_Nm} N m, misalignment = {misalignment_rad} rad): ring "
+            f"residual {data.residual:.3e} of the load after {data.iterations} iterations")
     ring = np.asarray(data.ring)
     rollers = data.rollers
     Z = len(rollers)
@@ -233,6 +235,7 @@ class BearingFrictionResult:
 def bearing_friction(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction,
                      *, temperature_K: float, inner_speed_rad_s: float, axial_N: float | None = None,
                      axial_offset_m: float | None = None, radial_N: float = 0.0, misalignment_rad: float = 0.0,
+                     tilt_moment_Nm: float = 0.0,
                      slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0,
                      cage: bool | str = True,
                      model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None
@@ -261,6 +264,10 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         ``pocket_fraction``; the result's ``cage_model`` says which). The dynamic simulation supports
         the free rollers under the seed paper's combined loads (they move +-6 um in +-170 um
         pockets); the pocket model there gave a 15 % higher torque.
+    tilt_moment_Nm
+        A tilt moment on the inner ring (about the axis normal to the radial load): the ring
+        tilts freely under it (``tilt_free`` of :func:`load_distribution`); 0 holds the ring's
+        tilt at ``misalignment_rad``. Not both.
     Other parameters as in :func:`load_distribution`; the centrifugal force uses the
     pure-rolling cage speed.
 
@@ -269,6 +276,9 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     warm-started solution (``data`` passed in) that fails them is solved again from a fresh state;
     one that still fails is returned with ``converged = False`` and the residuals in ``failure``.
     """
+    if tilt_moment_Nm != 0.0 and misalignment_rad != 0.0:
+        raise KegelInputError("<argument>", "tilt_moment_Nm", tilt_moment_Nm,
+                              "either a tilt moment (the ring tilts freely) or a misalignment (its tilt imposed), not both")
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     warm = data is not None
     data = data or Q.BearingData(model)
@@ -277,15 +287,25 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     def distribute(data) -> LoadDistribution:
         return load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
                                  radial_N=radial_N, misalignment_rad=misalignment_rad, cage_speed_rad_s=cage0,
+                                 tilt_moment_Nm=tilt_moment_Nm, tilt_free=tilt_moment_Nm != 0.0,
                                  model=model, data=data)
 
-    dist = distribute(data)
+    try:
+        dist = distribute(data)
+    except KegelSolverError:
+        if not warm:
+            raise
+        # a warm start must never decide the answer: from a fresh state
+        data = Q.BearingData(model)
+        warm = False
+        dist = distribute(data)
     t0 = time.perf_counter()
     T = _core.tribology
     E = _core.reduced_modulus_Pa(material.core, material.core)
     race = T.SurfacePair(bearing.sigma_raceway_m, bearing.zhou_hoeprich_raceway_B, bearing.zhou_hoeprich_raceway_C, E)
     rib = T.SurfacePair(bearing.sigma_rib_m, bearing.zhou_hoeprich_rib_B, bearing.zhou_hoeprich_rib_C, E)
-    loads = _loads(axial_N, axial_offset_m, radial_N, 0.0, misalignment_rad)
+    loads = _loads(axial_N, axial_offset_m, radial_N, tilt_moment_Nm, misalignment_rad)
+    loads.tilt_free = tilt_moment_Nm != 0.0
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
     modes = {True: "free_rollers", False: "off", "off": "off", "pocket": "pocket", "free_rollers": "free_rollers"}
     if not (isinstance(cage, (bool, str)) and cage in modes):

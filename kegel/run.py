@@ -225,7 +225,8 @@ def _quasi_static_point(scene: Scene, fid: "Fidelity", op, friction, *, model=No
     return bearing_friction(
         scene.geometry, scene.bearing, scene.material, scene.lubricant, friction, temperature_K=op.temperature_K,
         inner_speed_rad_s=op.speed_rad_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
-        radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, slices=fid.slices, method=fid.slice_model,
+        radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, tilt_moment_Nm=op.tilt_moment_Nm,
+        slices=fid.slices, method=fid.slice_model,
         rib_cells=_rib_cells(fid), cage=fid.cage, model=model, data=data)
 
 

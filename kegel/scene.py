@@ -667,6 +667,19 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
     mis = reader.quantity(op["misalignment"], "angle", "operating.misalignment") if "misalignment" in op else 0.0
     if abs(mis) > 0.01:
         raise reader.error("operating.misalignment", op["misalignment"], "|misalignment| <= 10 mrad")
+    if tilt != 0.0 and "axial_load" in values:
+        # a single TRB holds a tilt moment through its axial load: beyond Fa d_m / 2 every roller
+        # on one side would have to carry the whole axial load at the pitch radius (tipping)
+        fa_min = min(values["axial_load"])
+        limit = fa_min * 0.5 * bearing.pitch_diameter_m
+        if abs(tilt) >= limit:
+            raise reader.error("operating.tilt_moment", op["tilt_moment"],
+                               f"|tilt moment| < Fa d_m / 2 = {limit:.4g} N m (smallest axial load {fa_min:.4g} N, "
+                               f"d_m = {bearing.pitch_diameter_m * 1e3:.4g} mm): beyond it the inner ring tips over")
+    if tilt != 0.0 and mis != 0.0:
+        raise reader.error("operating.tilt_moment", op["tilt_moment"],
+                           "either a tilt moment (the inner ring tilts freely under it) or a misalignment (its tilt "
+                           "imposed), not both")
 
     axial_key = "axial_load" if "axial_load" in values else "axial_offset"
     order = ("temperature", axial_key, "radial_load", "speed")  # speed varies fastest

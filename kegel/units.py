@@ -3,7 +3,8 @@
 Scene files and command-line options write quantities as strings with units, such as
 ``"6 kN"``, ``"2000 rpm"`` or ``"50 degC"``. :func:`parse_quantity` turns one into an SI float
 (N, rad/s, K, m, N m, rad, s) and raises :class:`~kegel.errors.KegelInputError` naming the
-file, key and value when the text is not a quantity of the expected kind.
+file, key and value when the text is not a quantity of the expected kind. A speed written as a
+frequency without an angle (``"50 Hz"``, ``"3000 1/min"``) counts revolutions per unit time.
 """
 
 from __future__ import annotations
@@ -89,6 +90,10 @@ def parse_quantity(value: Any, kind: str, *, source: str | Path, key: str) -> fl
             source, key, value, f"{expected}; got {_describe(q)}"
         ) from None
     si = float(si)
+    if kind == "speed" and "radian" not in q.to_root_units()._units:
+        # a frequency without an angle (Hz, 1/s, 1/min) counts revolutions per unit time, as
+        # for a shaft: 50 Hz is 3000 rpm, not 50 rad/s (pint reads Hz as 1/s = rad/s)
+        si *= 2.0 * math.pi
     if not math.isfinite(si):
         raise KegelInputError(source, key, value, expected + " (a finite number)")
     return si

@@ -171,3 +171,31 @@ def test_bad_bearing_data_file_names_file_and_key(tmp_path):
         kegel.load_bearing(str(bad))
     assert str(bad) in str(info.value) and "published.roller_count" in str(info.value)
     assert "-16" in str(info.value) and "> 0" in str(info.value)
+
+
+def test_tilt_moment_beyond_tipping_or_with_misalignment(write_scene):
+    """issue 21: a quasi-static scene ignored tilt_moment = "1e12 N m" and echoed it."""
+    p = write_scene()
+    expect_error(p, "operating.tilt_moment", "1e12 N m", "tips over", overrides=['operating.tilt_moment="1e12 N m"'])
+    expect_error(p, "operating.tilt_moment", "not both",
+                 overrides=['operating.tilt_moment="10 N m"', 'operating.misalignment="1 mrad"'])
+
+
+def test_quasi_static_run_takes_the_tilt_moment_and_reports_a_failed_solve_in_one_line(tmp_path):
+    """The tilt moment tilts the ring in the quasi-static solution (the torque changes); a load the
+    solver cannot carry ends with one line on stderr and exit 1, no traceback."""
+    import json
+
+    base = ["examples/32216_table1.toml", "--set", 'operating.speed="2000 rpm"', "--set",
+            'operating.temperature="50 degC"', "--format", "json"]
+    res0 = run_kegel("run", *base, "--output", str(tmp_path / "a"))
+    res1 = run_kegel("run", *base, "--set", 'operating.tilt_moment="100 N m"', "--output", str(tmp_path / "b"))
+    assert res0.returncode == 0 and res1.returncode == 0, res1.stderr
+    p0 = json.loads((tmp_path / "a" / "results.json").read_text())["points"][0]
+    p1 = json.loads((tmp_path / "b" / "results.json").read_text())["points"][0]
+    assert p1["tilt_moment_Nm"] == 100.0 and p1["converged"]
+    assert abs(p1["friction_torque_Nm"] / p0["friction_torque_Nm"] - 1.0) > 0.02
+    assert max(p1["roller_inner_N"]) > 2 * min(p1["roller_inner_N"])  # the moment loads one side
+    bad = run_kegel("run", *base, "--set", 'operating.tilt_moment="300 N m"', "--output", str(tmp_path / "c"))
+    assert bad.returncode == 1
+    assert "Traceback" not in bad.stderr and "solver failed" in bad.stderr and "300" in bad.stderr

@@ -15,6 +15,13 @@ from kegel import KegelInputError, parse_quantity
         ("6 kN", "force", 6000.0),
         ("1349 lbf", "force", 1349 * 4.4482216152605),
         ("2000 rpm", "speed", 2000 * 2 * math.pi / 60),
+        # frequencies count revolutions (issue 21: "33.3333 Hz" ran at 318 rpm, 2 pi too slow)
+        ("33.3333 Hz", "speed", 33.3333 * 2 * math.pi),
+        ("2000 1/min", "speed", 2000 * 2 * math.pi / 60),
+        ("10 1/s", "speed", 10 * 2 * math.pi),
+        ("10 rad/s", "speed", 10.0),
+        ("360 deg/s", "speed", 2 * math.pi),
+        ("1 revolution/s", "speed", 2 * math.pi),
         ("50 degC", "temperature", 323.15),
         ("122 degF", "temperature", 323.15),
         ("20 um", "length", 20e-6),
