@@ -29,6 +29,14 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
     if speed == 0.0:
         raise KegelInputError(src, "--speed", speed_text, "a non-zero shaft speed")
     T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
+    from kegel.data import load_lubricant
+    from kegel.lubricant import lubricant_state
+    from kegel.scene import check_speed
+
+    lubricant_state(load_lubricant(args.lubricant, source=src, key="--lubricant"), T, source=src, key="--temperature")
+    check_speed(speed, bearing, source=src, key="--speed", text=speed_text)
+    if getattr(args, "max_iterations", 1) < 1:
+        raise KegelInputError(src, "--max-iterations", args.max_iterations, "at least 1 iteration")
     level = None if level_text == "flooded" else resolve_oil_level(level_text, bearing, source=src, key="--oil-level")
     if level is not None and level <= 0.0:
         raise KegelInputError(src, "--oil-level", level_text, "an oil level above 0 (or 'flooded')")

@@ -36,7 +36,7 @@ from .data import load_bearing, load_lubricant, load_material
 from .errors import KegelInputError, KegelSolverError
 from .geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
 from .lubricant import lubricant_state
-from .scene import Scene, load_scene
+from .scene import Scene, check_speed, load_scene
 from .units import parse_quantity
 
 __all__ = ["main"]
@@ -64,7 +64,7 @@ def _json_out(data: Any) -> None:
 def _cmd_bearing(args: argparse.Namespace) -> int:
     bearing = load_bearing(args.designation, source="command line", key="bearing")
     material = load_material(args.material, source="command line", key="--material")
-    g = derive_geometry(bearing, material)
+    g = derive_geometry(bearing, material, check_envelope=False)  # lists the violations below
     if args.format == "json":
         _json_out({"bearing": g.as_dict(), "apex_residual": apex_residual(g),
                    "envelope_violations": envelope_violations(g), "data_file": bearing.source_file})
@@ -96,6 +96,11 @@ def _cmd_lubricant(args: argparse.Namespace) -> int:
     return 0
 
 
+#: Largest Hertz pressure kegel evaluates a raceway contact at: ISO 76's static limit for roller
+#: bearings (4000 MPa, the basis of C0r); beyond it the steel yields and the elastic models fail.
+MAX_CONTACT_PRESSURE_PA = 4.0e9
+
+
 def _cmd_tribology(args: argparse.Namespace) -> int:
     from .tribology import axial_roller_loads, evaluate_raceway_contact, load_friction
 
@@ -106,7 +111,9 @@ def _cmd_tribology(args: argparse.Namespace) -> int:
     friction = load_friction(args.friction, source=src, key="--friction")
     g = derive_geometry(bearing, material)
     T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
-    omega = parse_quantity(args.speed, "speed", source=src, key="--speed")
+    lubricant_state(lub, T, source=src, key="--temperature")
+    omega = check_speed(parse_quantity(args.speed, "speed", source=src, key="--speed"), bearing, source=src,
+                        key="--speed", text=args.speed)
     if args.contact_load is not None:
         load = parse_quantity(args.contact_load, "force", source=src, key="--contact-load")
         load_note = "given"
@@ -127,6 +134,12 @@ def _cmd_tribology(args: argparse.Namespace) -> int:
         if isinstance(exc, KegelInputError):
             raise
         raise KegelInputError(src, "(arguments)", "", str(exc)) from None
+    p0_max = res.totals["max_pressure_Pa_max"]
+    if not p0_max <= MAX_CONTACT_PRESSURE_PA:
+        key, text = (("--contact-load", args.contact_load) if args.contact_load is not None
+                     else ("--axial-load", args.axial_load))
+        raise KegelInputError(src, key, text, f"a load whose Hertz pressure stays within {MAX_CONTACT_PRESSURE_PA / 1e6:.0f} "
+                              f"MPa (ISO 76's static limit for roller bearings; here p0 = {p0_max / 1e6:.0f} MPa)")
     if args.format == "json":
         _json_out({"bearing": bearing.designation, "lubricant": lub.name, "friction": friction.name,
                    "temperature_K": T, "shaft_speed_rad_s": omega, "slide_to_roll": args.slide_to_roll,
@@ -177,7 +190,8 @@ def _cmd_losses(args: argparse.Namespace) -> int:
     speeds_text = args.speed or ["500 rpm", "4000 rpm"]
     if len(speeds_text) != 2:
         raise KegelInputError(src, "--speed", speeds_text, "two speeds (from, to), e.g. --speed '500 rpm' --speed '4000 rpm'")
-    lo, hi = (parse_quantity(t, "speed", source=src, key="--speed") for t in speeds_text)
+    lo, hi = (check_speed(parse_quantity(t, "speed", source=src, key="--speed"), bearing, source=src, key="--speed",
+                          text=t) for t in speeds_text)
     if args.points < 1:
         raise KegelInputError(src, "--points", args.points, "at least one point")
     loads = {}

@@ -53,6 +53,7 @@ from numpy.polynomial import Polynomial
 from scipy.optimize import brentq
 
 from .data import BearingData, MaterialData
+from .errors import KegelInputError
 
 __all__ = [
     "BearingGeometry",
@@ -188,7 +189,7 @@ def _roller_mass_properties(
     return mass, i_axial, i_trans, com
 
 
-def derive_geometry(bearing: BearingData, material: MaterialData) -> BearingGeometry:
+def derive_geometry(bearing: BearingData, material: MaterialData, *, check_envelope: bool = True) -> BearingGeometry:
     """Derive the internal geometry of a tapered roller bearing (see the module docstring).
 
     Parameters
@@ -197,7 +198,29 @@ def derive_geometry(bearing: BearingData, material: MaterialData) -> BearingGeom
         Published and catalogue data (:func:`kegel.data.load_bearing`).
     material
         Roller material, for the roller mass and inertia.
+    check_envelope
+        Check the result against the bearing's boundary dimensions (:func:`envelope_violations`:
+        rollers inside the rings' width and diameters, raceways and rib inside their rings,
+        rollers not overlapping on the pitch circle). ``False`` only to list the violations, as
+        ``kegel bearing`` does.
+
+    Raises
+    ------
+    KegelInputError
+        With ``check_envelope``, a geometry that leaves the envelope: the message names the
+        bearing's data file and every violated condition.
     """
+    g = _derive_geometry(bearing, material)
+    if check_envelope:
+        problems = envelope_violations(g)
+        if problems:
+            raise KegelInputError(bearing.source_file, "(geometry)", bearing.designation,
+                                  "bearing data whose derived geometry fits its boundary dimensions; it does not: "
+                                  + "; ".join(problems))
+    return g
+
+
+def _derive_geometry(bearing: BearingData, material: MaterialData) -> BearingGeometry:
     d_m = bearing.pitch_diameter_m
     D_w = bearing.roller_mean_diameter_m
     L = bearing.roller_length_m

@@ -34,6 +34,11 @@ class LubricantState:
         return asdict(self)
 
 
+#: Temperature range accepted for lubricant data [degC], at every entry point (scene files, the
+#: command line, the CFD runner and the Python API all evaluate the oil through lubricant_state).
+TEMPERATURE_RANGE_DEGC = (-20.0, 150.0)
+
+
 def lubricant_state(lub: LubricantData, temperature_K: float, *, source: str = "<argument>",
                     key: str = "temperature") -> LubricantState:
     """Evaluate a lubricant's properties at ``temperature_K`` and ambient pressure.
@@ -44,10 +49,17 @@ def lubricant_state(lub: LubricantData, temperature_K: float, *, source: str = "
         If the temperature is outside the domain of the lubricant's formulas.
     """
     core = lub.core
+    lo, hi = TEMPERATURE_RANGE_DEGC
+    if not lo <= temperature_K - 273.15 <= hi:
+        raise KegelInputError(source, key, f"{temperature_K - 273.15:g} degC",
+                              f"a temperature in [{lo:g}, {hi:g}] degC (the range of kegel's lubricant data)")
     try:
         eta = _core.viscosity_ambient_Pas(core, temperature_K)
+        # the contact models' pressure-viscosity law (Eq. 7) must stay finite at this temperature
+        _core.tribology.make_contact_lubricant_state(core, temperature_K)
     except ValueError as exc:
-        raise KegelInputError(source, key, f"{temperature_K - 273.15:g} degC", str(exc)) from None
+        raise KegelInputError(source, key, f"{temperature_K - 273.15:g} degC",
+                              f"a temperature inside the domain of lubricant {lub.name}'s formulas ({exc})") from None
     return LubricantState(
         name=lub.name,
         temperature_K=temperature_K,

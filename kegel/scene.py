@@ -57,6 +57,7 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
 from __future__ import annotations
 
 import copy
+import math
 import itertools
 import tomllib
 from dataclasses import dataclass, field
@@ -70,6 +71,7 @@ from ._toml import read_toml
 from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
 from .errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
+from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
 from .tribology import ROLLING_THERMAL_MODELS
 from .units import RPM_TO_RAD_S, parse_quantity
 
@@ -82,6 +84,8 @@ __all__ = [
     "OperatingPoint",
     "Scene",
     "apply_overrides",
+    "check_speed",
+    "static_equivalent_load_N",
     "load_scene",
     "resolve_oil_level",
     "scene_from_dict",
@@ -90,8 +94,6 @@ __all__ = [
 #: Largest speed factor n * d_m accepted [rpm * mm]: about twice the usual limit of
 #: oil-lubricated tapered roller bearings, beyond which kegel's models are not meant to be used.
 MAX_SPEED_FACTOR_RPM_MM = 1.0e6
-#: Temperature range accepted for lubricant data [degC].
-TEMPERATURE_RANGE_DEGC = (-20.0, 150.0)
 
 _ALLOWED: dict[str, set[str]] = {
     "scene": {"name", "description"},
@@ -702,6 +704,50 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
     return points, swept
 
 
+def static_equivalent_load_N(g: BearingGeometry, axial_N: float, radial_N: float) -> float:
+    """ISO 76 static equivalent radial load of a single-row tapered roller bearing:
+    P0 = 0.5 Fr + Y0 Fa with Y0 = 0.22 cot(alpha) (alpha: the cup angle), and at least Fr.
+    (For the 32216, Y0 = 0.79; SKF's catalogue gives 0.8.)"""
+    y0 = 0.22 / math.tan(g.cup_angle_rad)
+    return max(radial_N, 0.5 * radial_N + y0 * axial_N)
+
+
+def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[OperatingPoint], bearing: BearingData,
+                       g: BearingGeometry) -> None:
+    """Loads against the basic static load rating C0r: the contact models are elastic, and a
+    static equivalent load above C0r (ISO 76: 4000 MPa at the most loaded roller contact) means
+    permanent deformation of the raceways. Displacement-controlled points are checked in the run."""
+    worst = max((p for p in points if p.axial_load_N is not None),
+                key=lambda p: static_equivalent_load_N(g, p.axial_load_N, p.radial_load_N), default=None)
+    if worst is None:
+        return
+    p0 = static_equivalent_load_N(g, worst.axial_load_N, worst.radial_load_N)
+    if p0 > bearing.C0r_N:
+        key = "axial_load" if worst.axial_load_N * 0.22 / math.tan(g.cup_angle_rad) >= 0.5 * worst.radial_load_N else "radial_load"
+        raise reader.error(f"operating.{key}", op[key],
+                           f"loads whose ISO 76 static equivalent load P0 stays within C0r = {bearing.C0r_N / 1e3:g} kN "
+                           f"of bearing {bearing.designation} (here P0 = {p0 / 1e3:.4g} kN at Fa = "
+                           f"{worst.axial_load_N / 1e3:.4g} kN, Fr = {worst.radial_load_N / 1e3:.4g} kN: beyond it the "
+                           "raceways deform permanently and the elastic contact models do not hold)")
+
+
+def check_speed(speed_rad_s: float, bearing: BearingData, *, source: str | Path, key: str, text: Any = None) -> float:
+    """The one speed check of every entry point (scene files, the command line, the CFD runner):
+    a non-zero speed with |n| d_m <= :data:`MAX_SPEED_FACTOR_RPM_MM`. Returns the speed.
+
+    Raises
+    ------
+    KegelInputError
+        Naming ``source``, ``key`` and the value as written (``text``).
+    """
+    n_max_rpm = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
+    if not (math.isfinite(speed_rad_s) and 0.0 < abs(speed_rad_s) / RPM_TO_RAD_S <= n_max_rpm):
+        raise KegelInputError(source, key, text if text is not None else speed_rad_s,
+                              f"a non-zero speed with |n| <= {n_max_rpm:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} "
+                              f"rpm mm for bearing {bearing.designation})")
+    return speed_rad_s
+
+
 def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overridden: set[str] | None = None) -> Scene:
     """Validate a raw scene dictionary (as read from TOML) and build a :class:`Scene`."""
     reader = _Reader(str(source), overridden or set())
@@ -724,6 +770,12 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
     lubricant = load_lubricant(str(lub_table["name"]), source=reader.src("lubricant.name"), key="lubricant.name")
 
     points, swept = _operating_points(reader, raw["operating"], bearing)
+    # the bearing's derived geometry must fit its envelope (a custom data file may not)
+    g = derive_geometry(bearing, material)
+    _check_static_load(reader, raw["operating"], points, bearing, g)
+    for T in sorted({p.temperature_K for p in points}):
+        # the oil's formulas must hold at every temperature of the scene (checked now, not in the run)
+        lubricant_state(lubricant, T, source=reader.src("operating.temperature"), key="operating.temperature")
     lubrication = _lubrication(reader, raw["lubrication"], bearing)
     fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
     dynamic = _dynamic(reader, raw.get("dynamic", {}))

@@ -199,3 +199,49 @@ def test_quasi_static_run_takes_the_tilt_moment_and_reports_a_failed_solve_in_on
     bad = run_kegel("run", *base, "--set", 'operating.tilt_moment="300 N m"', "--output", str(tmp_path / "c"))
     assert bad.returncode == 1
     assert "Traceback" not in bad.stderr and "solver failed" in bad.stderr and "300" in bad.stderr
+
+
+def test_temperature_outside_the_oil_formulas_is_found_by_check(write_scene):
+    """issue 21: -20 ... -11 degC passed check and crashed in run (Eq. 7's domain)."""
+    p = write_scene()
+    expect_error(p, "operating.temperature", "-15 degC", "domain", "FVA3", overrides=['operating.temperature="-15 degC"'])
+
+
+def test_loads_beyond_C0r_are_rejected(write_scene):
+    """issue 21: Fa = 5 MN (19 x C0r) ran and was reported as converged."""
+    p = write_scene()
+    expect_error(p, "operating.axial_load", "5 MN", "C0r = 260 kN", "P0", overrides=['operating.axial_load="5 MN"'])
+
+
+def test_custom_bearing_outside_its_envelope_is_rejected(write_scene, tmp_path):
+    """issue 21: overlapping rollers (Z = 200) ran to a torque; kegel bearing listed the violation."""
+    from pathlib import Path
+
+    src = Path(kegel.__file__).parent / "data" / "bearings" / "32216.toml"
+    bad = tmp_path / "crowded.toml"
+    bad.write_text(src.read_text().replace("roller_count = 16", "roller_count = 200"))
+    p = write_scene(replace={'designation = "32216"': f'designation = "{bad}"'})
+    with pytest.raises(kegel.KegelInputError) as info:
+        kegel.load_scene(p)
+    assert str(bad) in str(info.value) and "overlap" in str(info.value)
+    listed = run_kegel("bearing", str(bad))
+    assert listed.returncode == 0 and "overlap" in listed.stdout
+
+
+@pytest.mark.parametrize("args, key, words", [
+    (("lubricant", "FVA3", "--temperature", "1000 degC"), "--temperature", "[-20, 150] degC"),
+    (("tribology", "--axial-load", "1e9 N"), "--axial-load", "4000 MPa"),
+    (("tribology", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
+    (("tribology", "--temperature", "-15 degC"), "--temperature", "domain"),
+    (("losses", "32208", "--speed", "500 rpm", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
+    (("cfd", "run", "--max-iterations", "-5"), "--max-iterations", "at least 1"),
+    (("cfd", "run", "--temperature", "1000 degC"), "--temperature", "[-20, 150] degC"),
+    (("cfd", "run", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
+])
+def test_every_command_checks_its_ranges(args, key, words):
+    """issue 21: lubricant, tribology, losses and cfd run had no range checks (FVA 3 at 1000 degC,
+    p0 = 507 GPa, 1e7 rpm, --max-iterations -5)."""
+    res = run_kegel(*args)
+    assert res.returncode == 2, res.stderr
+    assert "Traceback" not in res.stderr and key in res.stderr and words in res.stderr, res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
