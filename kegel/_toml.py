@@ -12,8 +12,29 @@ from .errors import KegelInputError
 __all__ = ["read_toml", "require_table", "require_number", "require_str"]
 
 
+#: Largest input file kegel reads (scene, bearing, lubricant, friction data are a few kB).
+MAX_INPUT_BYTES = 10_000_000
+
+
 def read_toml(path: Path) -> dict[str, Any]:
-    """Read a TOML file; a malformed file raises KegelInputError with line and column."""
+    """Read a TOML file; a malformed file raises KegelInputError with line and column.
+
+    Only regular files are read (a named pipe would block the read for good; a device or a folder
+    is no input file), and at most :data:`MAX_INPUT_BYTES`."""
+    import os
+    import stat
+
+    path = Path(path)
+    try:
+        st = os.stat(path)
+    except FileNotFoundError:
+        raise KegelInputError(path, "", str(path), "an existing TOML file") from None
+    except OSError as exc:
+        raise KegelInputError(path, "", str(path), f"a readable UTF-8 TOML file ({exc})") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise KegelInputError(path, "", str(path), "a regular TOML file (not a folder, pipe or device)")
+    if st.st_size > MAX_INPUT_BYTES:
+        raise KegelInputError(path, "", f"{st.st_size} bytes", f"a TOML file of at most {MAX_INPUT_BYTES} bytes")
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:

@@ -94,6 +94,9 @@ __all__ = [
 #: Largest speed factor n * d_m accepted [rpm * mm]: about twice the usual limit of
 #: oil-lubricated tapered roller bearings, beyond which kegel's models are not meant to be used.
 MAX_SPEED_FACTOR_RPM_MM = 1.0e6
+#: Largest number of operating points in one scene (the product of its sweeps), checked before
+#: any point is built: a quasi-static point costs 10-1000 ms and its record about 5 kB.
+MAX_OPERATING_POINTS = 100_000
 
 _ALLOWED: dict[str, set[str]] = {
     "scene": {"name", "description"},
@@ -459,6 +462,8 @@ class _Reader:
             points = value["points"]
             if isinstance(points, bool) or not isinstance(points, int) or points < 1:
                 raise self.error(f"{key}.points", points, "a sweep with at least one point (an integer >= 1)")
+            if points > MAX_OPERATING_POINTS:
+                raise self.error(f"{key}.points", points, f"at most {MAX_OPERATING_POINTS} points (kegel's sweep limit)")
             lo = self.quantity(value["from"], kind, f"{key}.from")
             hi = self.quantity(value["to"], kind, f"{key}.to")
             if points == 1:
@@ -686,6 +691,12 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
     axial_key = "axial_load" if "axial_load" in values else "axial_offset"
     order = ("temperature", axial_key, "radial_load", "speed")  # speed varies fastest
     swept = tuple(k for k in order if len(values[k]) > 1)
+    total = math.prod(len(values[k]) for k in order)
+    if total > MAX_OPERATING_POINTS:
+        sizes = " x ".join(f"{k} {len(values[k])}" for k in order if len(values[k]) > 1)
+        raise reader.error("operating", f"{total} points ({sizes})",
+                           f"at most {MAX_OPERATING_POINTS} operating points in one scene (kegel's sweep limit; "
+                           "split the study into several scenes)")
     points = []
     for i, combo in enumerate(itertools.product(*(values[k] for k in order))):
         d = dict(zip(order, combo))

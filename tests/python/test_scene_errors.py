@@ -245,3 +245,30 @@ def test_every_command_checks_its_ranges(args, key, words):
     assert res.returncode == 2, res.stderr
     assert "Traceback" not in res.stderr and key in res.stderr and words in res.stderr, res.stderr
     assert len(res.stderr.strip().splitlines()) == 1
+
+
+def test_a_named_pipe_is_no_scene_file(tmp_path):
+    """issue 21: a named pipe as the scene file hung kegel check for good."""
+    import os
+
+    fifo = tmp_path / "scene.toml"
+    os.mkfifo(fifo)
+    res = run_kegel("check", str(fifo), timeout=30)
+    assert res.returncode == 2 and "regular TOML file" in res.stderr and str(fifo) in res.stderr
+
+
+def test_sweep_size_is_limited_before_anything_is_built(write_scene):
+    """issue 21: a 10^6 x 10^6 sweep was built in memory by kegel check (MemoryError after 80 s)."""
+    import time
+
+    from kegel.scene import MAX_OPERATING_POINTS
+
+    p = write_scene()
+    t0 = time.perf_counter()
+    expect_error(p, "operating.speed.points", "at most", overrides=[
+        'operating.speed={from="500 rpm", to="4000 rpm", points=1000000}',
+        'operating.axial_load={from="1 kN", to="6 kN", points=1000000}'])
+    expect_error(p, "operating", "operating points in one scene", str(MAX_OPERATING_POINTS), overrides=[
+        'operating.speed={from="500 rpm", to="4000 rpm", points=1000}',
+        'operating.axial_load={from="1 kN", to="6 kN", points=1000}'])
+    assert time.perf_counter() - t0 < 10.0
