@@ -12,7 +12,7 @@ from typing import Any
 
 from . import _core
 
-__all__ = ["atomic_write_text", "atomic_write_json", "provenance"]
+__all__ = ["atomic_write_text", "atomic_write_json", "provenance", "RunFolder", "OutputLocked"]
 
 
 def atomic_write_text(path: str | Path, text: str) -> Path:
@@ -50,3 +50,150 @@ def provenance() -> dict[str, str]:
         "python_version": platform.python_version(),
         "created_utc": datetime.now(timezone.utc).isoformat(timespec="seconds"),
     }
+
+
+class OutputLocked(RuntimeError):
+    """Another live kegel run owns the output folder."""
+
+
+class RunFolder:
+    """The output folder of one ``kegel run``: owned through a lock file, with each finished
+    operating point streamed to ``points.jsonl`` so that an interrupted run resumes.
+
+    - Lock: ``.kegel-run.lock`` created exclusively (``O_EXCL``) with the owner's PID and run
+      id; a lock whose process is gone is taken over. A live owner makes :meth:`open` raise
+      :class:`OutputLocked` naming it.
+    - Stream: ``points.jsonl``, one JSON line per finished point after a header line with the
+      run's ``key`` (scene, fidelity, kegel version). A run whose key matches the header resumes:
+      :meth:`open` returns the finished points by index and the run skips them. Another key
+      starts afresh: the previous run's summary files (results.json, results.csv, plots) are
+      removed first, so no file of an older run stays beside the new ones.
+    - :meth:`finish` removes the stream once the summary files are written; :meth:`close` the
+      lock (always, also on an error or an interrupt).
+    """
+
+    LOCK = ".kegel-run.lock"
+    STREAM = "points.jsonl"
+
+    def __init__(self, path: str | Path, key: dict[str, Any], summary_files: tuple[str, ...]) -> None:
+        self.path = Path(path)
+        self.key = key
+        self.summary_files = summary_files
+        self.run_id = os.urandom(8).hex()
+        self._lock_fd: int | None = None
+        self._stream = None
+
+    def open(self) -> dict[int, dict[str, Any]]:
+        """Take the folder; returns the finished points of an interrupted run with the same key.
+
+        Raises
+        ------
+        OutputLocked
+            A live run owns the folder.
+        OSError
+            The folder cannot be created or written (a file, read-only, full).
+        """
+        self.path.mkdir(parents=True, exist_ok=True)
+        lock = self.path / self.LOCK
+        for _ in range(2):
+            try:
+                self._lock_fd = os.open(lock, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
+                break
+            except FileExistsError:
+                owner = _lock_owner(lock)
+                if owner is not None and _alive(owner):
+                    raise OutputLocked(f"{self.path} is the output folder of a running kegel run (PID {owner}, "
+                                       f"lock {lock}); choose another --output or wait for it") from None
+                lock.unlink(missing_ok=True)  # stale: its process is gone
+        else:
+            raise OutputLocked(f"{self.path}: could not take the lock {lock}")
+        os.write(self._lock_fd, json.dumps({"pid": os.getpid(), "run_id": self.run_id}).encode())
+        os.fsync(self._lock_fd)
+        stream = self.path / self.STREAM
+        done: dict[int, dict[str, Any]] = {}
+        if stream.is_file():
+            done = _read_stream(stream, self.key)
+        if not done:
+            for name in (*self.summary_files, self.STREAM):
+                (self.path / name).unlink(missing_ok=True)
+            for pattern in (".*.tmp", ".*.png"):  # temporary files of an interrupted write
+                for tmp in self.path.glob(pattern):
+                    tmp.unlink(missing_ok=True)
+            self._stream = open(stream, "w", encoding="utf-8")
+            self._write_line({"kegel_run": self.key, "run_id": self.run_id})
+        else:
+            self._stream = open(stream, "a", encoding="utf-8")
+        return done
+
+    def _write_line(self, obj: dict[str, Any]) -> None:
+        self._stream.write(json.dumps(obj, allow_nan=False) + "\n")
+        self._stream.flush()
+        os.fsync(self._stream.fileno())
+
+    def add(self, point: dict[str, Any]) -> None:
+        """Stream one finished point."""
+        self._write_line({"point": point})
+
+    def finish(self) -> None:
+        """The summary files are written: the stream is no longer needed."""
+        if self._stream is not None:
+            self._stream.close()
+            self._stream = None
+        (self.path / self.STREAM).unlink(missing_ok=True)
+
+    def close(self) -> None:
+        if self._stream is not None:
+            self._stream.close()
+            self._stream = None
+        if self._lock_fd is not None:
+            os.close(self._lock_fd)
+            self._lock_fd = None
+            (self.path / self.LOCK).unlink(missing_ok=True)
+
+    def __enter__(self) -> "RunFolder":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+
+def _lock_owner(lock: Path) -> int | None:
+    try:
+        return int(json.loads(lock.read_text() or "{}").get("pid"))
+    except (OSError, ValueError, TypeError):
+        return None
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _read_stream(stream: Path, key: dict[str, Any]) -> dict[int, dict[str, Any]]:
+    """Finished points of a stream written with the same key (an unreadable last line, cut by
+    an interrupt, is dropped); empty for another key or an unreadable header."""
+    done: dict[int, dict[str, Any]] = {}
+    try:
+        lines = stream.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return {}
+    try:
+        header = json.loads(lines[0]) if lines else {}
+    except json.JSONDecodeError:
+        return {}
+    if header.get("kegel_run") != json.loads(json.dumps(key)):
+        return {}
+    for line in lines[1:]:
+        try:
+            p = json.loads(line)["point"]
+            done[int(p["index"])] = p
+        except (json.JSONDecodeError, KeyError, TypeError, ValueError):
+            continue
+    return done

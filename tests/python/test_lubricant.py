@@ -43,8 +43,10 @@ def test_cli_rejects_bad_temperature():
     res = run_kegel("lubricant", "FVA3", "--temperature", "50 bar")
     assert res.returncode == 2
     assert "--temperature" in res.stderr and "'50 bar'" in res.stderr and "a temperature" in res.stderr
-    res = run_kegel("lubricant", "FVA3", "--temperature", "-150 degC")
-    assert res.returncode == 2 and "Vogel pole" in res.stderr
+    res = run_kegel("lubricant", "FVA3", "--temperature", "-150 degC")  # below the Vogel pole: kegel's range first
+    assert res.returncode == 2 and "[-20, 150] degC" in res.stderr
+    res = run_kegel("lubricant", "FVA3", "--temperature", "-15 degC")  # in range, outside Eq. 7's domain
+    assert res.returncode == 2 and "domain" in res.stderr and "Eq. 7" in res.stderr
 
 
 def test_unknown_lubricant_lists_known_ones():
