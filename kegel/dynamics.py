@@ -387,9 +387,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     quads: list[np.ndarray] = []
     ck = Path(checkpoint) if checkpoint is not None else None
     resumed_from = None
-    saved = np.load(ck, allow_pickle=False) if ck is not None and ck.exists() else None
-    if saved is not None and (str(saved["key"]) != checkpoint_key or saved["y"].shape != y0.shape):
-        saved = None  # written for other inputs: start afresh (it is overwritten)
+    saved = _load_checkpoint(ck, checkpoint_key, y0.shape) if ck is not None and ck.exists() else None
     if saved is not None:
         t_start, y0 = float(saved["t"]), saved["y"]
         resumed_from = t_start
@@ -467,12 +465,42 @@ def _pure_rolling(g: BearingGeometry, inner_speed_rad_s: float) -> tuple[float, 
     return wc, [spin] * g.roller_count
 
 
+def _load_checkpoint(path: Path, key: str, shape: tuple) -> dict[str, Any] | None:
+    """The saved state of an interrupted run, or None. A checkpoint written for other inputs, or
+    one that cannot be read (cut short by a full disk or a kill), is discarded with a message
+    naming the file, and the point starts afresh."""
+    import sys
+    import zipfile
+
+    names = ("t", "y", "times", "states", "quads", "rows", "key")
+    try:
+        with np.load(path, allow_pickle=False) as f:
+            saved = {k: f[k] for k in names}
+    except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile) as exc:
+        print(f"kegel: checkpoint {path} is unreadable ({type(exc).__name__}: {exc}); discarded, the point "
+              "starts afresh", file=sys.stderr)
+        path.unlink(missing_ok=True)
+        return None
+    if str(saved["key"]) != key or saved["y"].shape != shape:
+        print(f"kegel: checkpoint {path} was written for other inputs; discarded, the point starts afresh",
+              file=sys.stderr)
+        return None  # overwritten by this run's first checkpoint
+    return saved
+
+
 def _save_checkpoint(path: Path, t: float, y: np.ndarray, times: list, states: list, quads: list,
                      rows: dict, key: str) -> None:
-    tmp = path.with_name(path.name + ".tmp.npz")
-    np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states), quads=np.asarray(quads),
-             rows=json.dumps(rows), key=key)
-    os.replace(tmp, path)
+    import tempfile
+
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=".tmp.npz", dir=path.parent)
+    os.close(fd)
+    try:
+        np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states), quads=np.asarray(quads),
+                 rows=json.dumps(rows), key=key)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 def _divergence_report(res: DynamicResult, message: str) -> str:

@@ -360,8 +360,11 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
                    average_fraction=dyn.average_fraction, rtol=dyn.tolerance, hold_axial=dyn.hold_axial,
                    tilt_free=dyn.tilt_free, tilt_moment_Nm=op.tilt_moment_Nm,
                    checkpoint=pdir / "checkpoint.npz", checkpoint_interval_s=dyn.checkpoint_interval_s,
+                   # the threads do not change the result (rollers in parallel, identical to one thread),
+                   # so a run resumed with another thread count keeps its checkpoint
                    checkpoint_key=json.dumps([scene.bearing.designation, scene.lubricant.name, op.as_dict(),
-                                              fid.as_dict(), dyn.as_dict()], sort_keys=True),
+                                              fid.as_dict(), {k: v for k, v in dyn.as_dict().items() if k != "threads"}],
+                                             sort_keys=True),
                    progress=progress, elements=elements, load_profile=list(dyn.load_profile),
                    threads=dyn.threads or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
     st = res.steady

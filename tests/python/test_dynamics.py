@@ -298,6 +298,20 @@ def test_an_interrupted_run_resumes_from_its_checkpoint(setup, tmp_path):
     assert other.stats["resumed_from_s"] is None
 
 
+def test_a_truncated_checkpoint_is_named_and_discarded(setup, tmp_path, capsys):
+    """issue 21: a checkpoint cut short (full disk, kill) blocked every rerun with a BadZipFile
+    traceback naming no file; now it is named, discarded, and the point starts afresh."""
+    g, b, m, lub, fr = setup
+    ck = tmp_path / "checkpoint.npz"
+    ck.write_bytes(b"PK\x03\x04 cut short")
+    res = simulate(g, b, m, lub, fr, temperature_K=323.15, speed_profile=[(0, 2000 * RPM)], duration_s=1e-3,
+                   axial_N=6000.0, slices=8, output_interval_s=2e-4, checkpoint=ck, checkpoint_key="k")
+    assert res.finished and res.stats["resumed_from_s"] is None
+    err = capsys.readouterr().err
+    assert str(ck) in err and "unreadable" in err and "starts afresh" in err
+    assert not list(tmp_path.glob(".*.tmp.npz"))
+
+
 def test_bad_inputs_raise_clear_errors(setup):
     g, b, m, lub, fr = setup
     with pytest.raises(kegel.KegelInputError, match="speed_profile"):
