@@ -55,14 +55,22 @@ def available_materials() -> list[str]:
     return _available("materials")
 
 
+def _is_file(path: Path) -> bool:
+    """``path.is_file()`` that answers False for a name the system cannot look up (too long, a NUL)."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
 def _resolve(name: str, folder: str, what: str, source: str | Path, key: str) -> Path:
     candidate = Path(name)
     if candidate.suffix == ".toml":
-        if not candidate.is_file():
+        if not _is_file(candidate):
             raise KegelInputError(source, key, name, f"an existing {what} data file")
         return candidate
     path = DATA_DIR / folder / f"{name}.toml"
-    if not path.is_file():
+    if not name or "/" in name or "\x00" in name or not _is_file(path):
         known = ", ".join(_available(folder))
         raise KegelInputError(source, key, name, f"a known {what} ({known}) or a path to a .toml file")
     return path
