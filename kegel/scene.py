@@ -97,6 +97,10 @@ MAX_SPEED_FACTOR_RPM_MM = 1.0e6
 #: Largest number of operating points in one scene (the product of its sweeps), checked before
 #: any point is built: a quasi-static point costs 10-1000 ms and its record about 5 kB.
 MAX_OPERATING_POINTS = 100_000
+#: Dynamic runs: simulated time, output interval and number of outputs per point.
+MAX_DYNAMIC_DURATION_S = 10.0
+MIN_OUTPUT_INTERVAL_S = 1e-6
+MAX_DYNAMIC_OUTPUTS = 200_000
 
 _ALLOWED: dict[str, set[str]] = {
     "scene": {"name", "description"},
@@ -249,6 +253,17 @@ def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
             kw[attr] = v
     if kw.get("output_interval_s", 1e-4) > kw.get("duration_s", 0.02):
         raise reader.error("dynamic.output_interval", table.get("output_interval"), "at most the duration")
+    if kw.get("duration_s", 0.02) > MAX_DYNAMIC_DURATION_S:
+        raise reader.error("dynamic.duration", table.get("duration"),
+                           f"at most {MAX_DYNAMIC_DURATION_S:g} s of simulated time (time steps are microseconds)")
+    if kw.get("output_interval_s", 1e-4) < MIN_OUTPUT_INTERVAL_S:
+        raise reader.error("dynamic.output_interval", table.get("output_interval"),
+                           f"at least {MIN_OUTPUT_INTERVAL_S * 1e6:g} us")
+    outputs = kw.get("duration_s", 0.02) / kw.get("output_interval_s", 1e-4)
+    if outputs > MAX_DYNAMIC_OUTPUTS:
+        raise reader.error("dynamic.output_interval", table.get("output_interval"),
+                           f"at most {MAX_DYNAMIC_OUTPUTS} outputs per point (here {outputs:.3g}: every output keeps "
+                           "the state of every body)")
     for key in ("hold_axial", "tilt_free"):
         if key in table:
             if not isinstance(table[key], bool):
@@ -742,6 +757,31 @@ def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[Opera
                            "raceways deform permanently and the elastic contact models do not hold)")
 
 
+def _check_dynamic_profiles(reader: "_Reader", table: dict[str, Any], dyn: "DynamicSettings", bearing: BearingData,
+                            g: BearingGeometry) -> None:
+    """The dynamic profiles within the same limits as the operating points: speeds with
+    |n| d_m <= MAX_SPEED_FACTOR_RPM_MM (0 allowed: a start from rest), axial loads > 0, radial
+    loads >= 0, and the static equivalent load within C0r (a profile to 1e9 rpm or to Fa = 0
+    crashed in the run)."""
+    n_max = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
+    for i, (_, w) in enumerate(dyn.speed_profile):
+        if not abs(w) / RPM_TO_RAD_S <= n_max:
+            raise reader.error(f"dynamic.speed_profile[{i}][1]", table["speed_profile"][i][1],
+                               f"|n| <= {n_max:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} rpm mm for bearing "
+                               f"{bearing.designation})")
+    for i, (_, fa, fr) in enumerate(dyn.load_profile):
+        if not fa > 0.0:
+            raise reader.error(f"dynamic.load_profile[{i}][1]", table["load_profile"][i][1],
+                               "an axial load > 0 (a single TRB needs an axial load to hold its rollers)")
+        if not fr >= 0.0:
+            raise reader.error(f"dynamic.load_profile[{i}][2]", table["load_profile"][i][2], "a radial load >= 0")
+        p0 = static_equivalent_load_N(g, fa, fr)
+        if p0 > bearing.C0r_N:
+            raise reader.error(f"dynamic.load_profile[{i}]", table["load_profile"][i],
+                               f"loads whose ISO 76 static equivalent load stays within C0r = {bearing.C0r_N / 1e3:g} kN "
+                               f"(here P0 = {p0 / 1e3:.4g} kN)")
+
+
 def check_speed(speed_rad_s: float, bearing: BearingData, *, source: str | Path, key: str, text: Any = None) -> float:
     """The one speed check of every entry point (scene files, the command line, the CFD runner):
     a non-zero speed with |n| d_m <= :data:`MAX_SPEED_FACTOR_RPM_MM`. Returns the speed.
@@ -790,6 +830,7 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
     lubrication = _lubrication(reader, raw["lubrication"], bearing)
     fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
     dynamic = _dynamic(reader, raw.get("dynamic", {}))
+    _check_dynamic_profiles(reader, raw.get("dynamic", {}), dynamic, bearing, g)
 
     stem = Path(str(source)).stem if str(source) != "<dict>" else "scene"
     out = raw.get("output", {}).get("directory", f"results/{stem}")

@@ -272,3 +272,17 @@ def test_sweep_size_is_limited_before_anything_is_built(write_scene):
         'operating.speed={from="500 rpm", to="4000 rpm", points=1000}',
         'operating.axial_load={from="1 kN", to="6 kN", points=1000}'])
     assert time.perf_counter() - t0 < 10.0
+
+
+@pytest.mark.parametrize("override, key, words", [
+    ('dynamic.speed_profile=[["0 ms", "0 rpm"], ["10 ms", "1e9 rpm"]]', "dynamic.speed_profile[1][1]", "rpm mm"),
+    ('dynamic.load_profile=[["0 ms", "0 kN", "0 kN"]]', "dynamic.load_profile[0][1]", "axial load > 0"),
+    ('dynamic.load_profile=[["0 ms", "6 kN", "5 MN"]]', "dynamic.load_profile[0]", "C0r"),
+    ('dynamic.duration="1e9 s"', "dynamic.duration", "at most 10 s"),
+    ('dynamic.output_interval="1 ns"', "dynamic.output_interval", "at least 1 us"),
+])
+def test_dynamic_profiles_and_times_are_checked(write_scene, override, key, words):
+    """issue 21: profiles to 1e9 rpm or Fa = 0, a duration of 1e9 s and a 1 ns output interval
+    passed check and crashed (or never ended) in the run."""
+    p = write_scene()
+    expect_error(p, key, words, overrides=['model.solution="dynamic"', override])
