@@ -408,7 +408,8 @@ def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, 
     ax2.set_ylabel("hydraulic torque [N mm]")
     ax2.set_title(f"components at {last:.0f} rpm")
     ax2.legend(fontsize=7)
-    fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC: Liebrecht (Eq. 38-40, 1/min) and SKF drag")
+    fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC: Liebrecht (Eq. 38-40, 1/min), SKF drag"
+                 + (" and kegel CFD" if cfd_rows else ""))
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
