@@ -279,3 +279,39 @@ def test_cli_losses_side_by_side_json_options_and_errors(tmp_path):
     data = json.loads(res.stdout)
     assert data["skf"]["rolling_sliding"].startswith("no SKF series constants")
     assert all(s["skf_rolling_sliding_Nm"] is None and s["skf_drag_Nm"] > 0 for s in data["side_by_side"])
+
+
+def test_losses_puts_cfd_results_beside_the_correlations(tmp_path):
+    """kegel losses --cfd: a CFD result of the same bearing, oil and temperature joins the table
+    with the correlations evaluated at its own speed and oil level and its wall time (run plus
+    meshing); results of another temperature are left out."""
+    import json
+    import math
+
+    from conftest import run_kegel
+
+    def result(folder, T_K, level, loss):
+        case = tmp_path / folder
+        case.mkdir()
+        (case / "results.json").write_text(json.dumps({
+            "point": {"bearing": "32208", "lubricant": "FVA3", "speed_rad_s": 2000 * math.pi / 30,
+                      "temperature_K": T_K, "oil_level_m": level},
+            "kinematics": {}, "fidelity": {"mesh": "small", "cells": 234055}, "runtime_s": 300.0,
+            "loss_torque_at_shaft_Nm": loss, "steady": True,
+            "angular_momentum_balance": {"relative_to_drive_torque": -0.078}}))
+        (case / "kegel-case.json").write_text(json.dumps({"mesh_time_s": 40.0}))
+
+    result("a", 323.15, None, 0.0652)
+    result("b", 323.15, 0.04, 0.026)
+    result("c", 353.15, None, 0.03)  # another temperature
+    res = run_kegel("losses", "32208", "--cfd", str(tmp_path), "--format", "json", "--plot", str(tmp_path / "l.png"))
+    assert res.returncode == 0, res.stderr
+    d = json.loads(res.stdout)
+    rows = d["cfd"]
+    assert [r["oil_level"] for r in rows] == ["flooded", "shaft_center"]
+    flooded = rows[0]
+    assert flooded["loss_torque_Nm"] == 0.0652 and flooded["wall_time_s"] == 340.0
+    assert flooded["liebrecht_total_Nm"] == pytest.approx(0.145, rel=0.01)  # 145 N mm at 2000 rpm, 1/min reading
+    assert flooded["skf_drag_Nm"] == pytest.approx(0.1275, rel=0.01)
+    assert rows[1]["skf_drag_Nm"] == pytest.approx(0.066, rel=0.02)
+    assert d["cost_per_point_s"]["liebrecht_s"] < 0.01 and (tmp_path / "l.png").is_file()
