@@ -15,9 +15,10 @@ __all__ = ["add_cfd_parser"]
 
 
 def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str):
-    from kegel.data import load_bearing
+    from kegel.data import load_bearing, load_lubricant
     from kegel.errors import KegelInputError
-    from kegel.scene import resolve_oil_level
+    from kegel.lubricant import lubricant_state
+    from kegel.scene import check_speed, resolve_oil_level
     from kegel.units import parse_quantity
 
     from .geometry import MESH_LEVELS
@@ -26,15 +27,9 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
     src = "command line"
     bearing = load_bearing(args.bearing, source=src, key="--bearing")
     speed = parse_quantity(speed_text, "speed", source=src, key="--speed")
-    if speed == 0.0:
-        raise KegelInputError(src, "--speed", speed_text, "a non-zero shaft speed")
+    check_speed(speed, bearing, source=src, key="--speed", text=speed_text)  # non-zero, n d_m <= 1e6 rpm mm
     T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
-    from kegel.data import load_lubricant
-    from kegel.lubricant import lubricant_state
-    from kegel.scene import check_speed
-
     lubricant_state(load_lubricant(args.lubricant, source=src, key="--lubricant"), T, source=src, key="--temperature")
-    check_speed(speed, bearing, source=src, key="--speed", text=speed_text)
     if getattr(args, "max_iterations", 1) < 1:
         raise KegelInputError(src, "--max-iterations", args.max_iterations, "at least 1 iteration")
     level = None if level_text == "flooded" else resolve_oil_level(level_text, bearing, source=src, key="--oil-level")

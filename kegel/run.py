@@ -92,18 +92,39 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         chosen, choice = choose_fidelity(scene)
         scene = dataclasses.replace(scene, fidelity=chosen)
     fid = scene.fidelity
-    method = fid.slice_model
-    rib_cells = _rib_cells(fid)
     friction = _friction(fid)
-    model = bearing_model(g, b, m, slices=fid.slices, method=method)
+    model = bearing_model(g, b, m, slices=fid.slices, method=fid.slice_model)
     data = _core.quasi_static.BearingData(model)
     cfd_runs = _read_cfd_runs(scene)
-    folder, done = None, {}
-    if write:
-        folder, done = _open_folder(scene, fid, out)
+    folder, done = _open_folder(scene, fid, out) if write else (None, {})
     try:
-        return _solve_points(scene, fid, out, friction, model, data, cfd_runs, folder, done, progress, on_point,
-                             write, choice, rib_cells, t_start)
+        bar = _Progress(len(scene.operating_points), progress)
+        points: list[dict[str, Any]] = []
+        for op in scene.operating_points:
+            label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
+            if op.index in done:
+                # finished by an interrupted run of the same scene, fidelity and version (a point's
+                # answer does not depend on the points solved before it)
+                points.append(done[op.index])
+                bar.update(len(points), label + " (resumed)")
+                continue
+            if fid.solution == "dynamic":
+                point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
+            else:
+                point, data = _quasi_static_record(scene, fid, op, friction, model, data, cfd_runs)
+            points.append(point)
+            if folder is not None:
+                folder.add(point)
+            if on_point:
+                on_point(point)
+            bar.update(len(points), label)
+        bar.close()
+        runtime = time.perf_counter() - t_start
+        if folder is None:
+            return RunResult(points=points, files={}, runtime_s=runtime)
+        files = _write_summary(scene, friction, choice, points, runtime, out)
+        folder.finish()
+        return RunResult(points=points, files=files, runtime_s=runtime)
     finally:
         if folder is not None:
             folder.close()
@@ -133,99 +154,80 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path):
     return folder, done
 
 
-def _solve_points(scene, fid, out, friction, model, data, cfd_runs, folder, done, progress, on_point, write,
-                  choice, rib_cells, t_start) -> RunResult:
-    g, b, m = scene.geometry, scene.bearing, scene.material
-    bar = _Progress(len(scene.operating_points), progress)
-    points: list[dict[str, Any]] = []
-    for i, op in enumerate(scene.operating_points):
-        if op.index in done:
-            # finished by an interrupted run of the same scene, fidelity and version (a point's
-            # answer does not depend on the points solved before it)
-            points.append(done[op.index])
-            bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC (resumed)")
-            continue
-        if fid.solution == "dynamic":
-            point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
-            points.append(point)
-            if folder is not None:
-                folder.add(point)
-            if on_point:
-                on_point(point)
-            bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
-            continue
-        dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
-        if not fr.converged:
-            # never warm-start the next point from a failed one
-            data = _core.quasi_static.BearingData(model)
-            print(f"kegel: point {i} (n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC) failed its "
-                  f"plausibility gates and is reported as failed: {fr.failure}", file=sys.stderr)
-        state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
-        hyd = None
-        if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
-            hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
-                                    oil_level_m=scene.lubrication.oil_level_m,
-                                    cage_speed_rad_s=fr.cage_speed_rad_s)
-        hyd_torque = hyd.total_Nm if hyd else 0.0
-        hyd_out = hyd.as_dict() if hyd else None
-        if fid.hydraulic == "cfd":
-            # the CFD loss torque of this point (hydraulic power / shaft speed), as computed
-            cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
-            hyd_torque = cfd["loss_torque_at_shaft_Nm"]
-            hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
-                       "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
-        w = op.speed_rad_s
-        skf = _skf_point(scene, op, state, dist.axial_force_N)
-        point = {
-            **op.as_dict(),
-            "friction_torque_Nm": fr.drive_torque_Nm,
-            "hydraulic_torque_Nm": hyd_torque,
-            "total_torque_Nm": fr.drive_torque_Nm + hyd_torque,
-            "outer_ring_torque_Nm": fr.outer_ring_torque_Nm,
-            "power_input_W": fr.power_input_W,
-            "power_dissipated_W": fr.power_dissipated_W,
-            "power_balance_error": fr.power_balance_error,
-            "cage_speed_rpm": fr.cage_speed_rad_s * 30 / math.pi,
-            "cage_slip": fr.cage_slip,
-            "cage_model": fr.cage_model,
-            "pocket_fraction": fr.pocket_fraction,
-            "roller_drift_m": fr.roller_drift_m,
-            "torque_by_contact_Nm": fr.torque_by_contact_Nm(w),
-            "torque_by_mechanism_Nm": fr.torque_by_mechanism_Nm(w),
-            "power_W": fr.power_W,
-            "Lambda_min": fr.Lambda_min,
-            "phi_max": fr.phi_max,
-            "hydraulic": hyd_out,
-            "skf_catalogue_model": skf,
-            "roller_azimuth_rad": dist.azimuth_rad.tolist(),
-            "roller_outer_N": dist.outer_N.tolist(),
-            "roller_inner_N": dist.inner_N.tolist(),
-            "roller_rib_N": dist.rib_N.tolist(),
-            "axial_force_N": dist.axial_force_N,
-            "ring_displacement_m": dist.ring_displacement_m.tolist(),
-            "load_residual": dist.residual,
-            "converged": fr.converged,
-            "failure": fr.failure,
-            "start": fr.start,
-            "runtime_s": fr.runtime_s,
-            "lubricant_state": state.as_dict(),
-        }
-        points.append(point)
-        if folder is not None:
-            folder.add(point)
-        if on_point:
-            on_point(point)
-        bar.update(i + 1, f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC")
-    bar.close()
-    runtime = time.perf_counter() - t_start
-    if not write:
-        return RunResult(points=points, files={}, runtime_s=runtime)
-    out.mkdir(parents=True, exist_ok=True)
+def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data, cfd_runs):
+    """One quasi-static operating point as its results record, and the state to warm-start the
+    next point from (a fresh one after a failed point)."""
+    g = scene.geometry
+    dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
+    if not fr.converged:
+        # never warm-start the next point from a failed one
+        data = _core.quasi_static.BearingData(model)
+        print(f"kegel: point {op.index} (n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC) failed its "
+              f"plausibility gates and is reported as failed: {fr.failure}", file=sys.stderr)
+    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+    hyd = None
+    if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
+        hyd = hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=op.speed_rad_s,
+                                oil_level_m=scene.lubrication.oil_level_m,
+                                cage_speed_rad_s=fr.cage_speed_rad_s)
+    hyd_torque = hyd.total_Nm if hyd else 0.0
+    hyd_out = hyd.as_dict() if hyd else None
+    if fid.hydraulic == "cfd":
+        # the CFD loss torque of this point (hydraulic power / shaft speed), as computed
+        cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
+        hyd_torque = cfd["loss_torque_at_shaft_Nm"]
+        hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
+                   "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
+    w = op.speed_rad_s
+    skf = _skf_point(scene, op, state, dist.axial_force_N)
+    point = {
+        **op.as_dict(),
+        "friction_torque_Nm": fr.drive_torque_Nm,
+        "hydraulic_torque_Nm": hyd_torque,
+        "total_torque_Nm": fr.drive_torque_Nm + hyd_torque,
+        "outer_ring_torque_Nm": fr.outer_ring_torque_Nm,
+        "power_input_W": fr.power_input_W,
+        "power_dissipated_W": fr.power_dissipated_W,
+        "power_balance_error": fr.power_balance_error,
+        "cage_speed_rpm": fr.cage_speed_rad_s * 30 / math.pi,
+        "cage_slip": fr.cage_slip,
+        "cage_model": fr.cage_model,
+        "pocket_fraction": fr.pocket_fraction,
+        "roller_drift_m": fr.roller_drift_m,
+        "torque_by_contact_Nm": fr.torque_by_contact_Nm(w),
+        "torque_by_mechanism_Nm": fr.torque_by_mechanism_Nm(w),
+        "power_W": fr.power_W,
+        "Lambda_min": fr.Lambda_min,
+        "phi_max": fr.phi_max,
+        "hydraulic": hyd_out,
+        "skf_catalogue_model": skf,
+        "roller_azimuth_rad": dist.azimuth_rad.tolist(),
+        "roller_outer_N": dist.outer_N.tolist(),
+        "roller_inner_N": dist.inner_N.tolist(),
+        "roller_rib_N": dist.rib_N.tolist(),
+        "axial_force_N": dist.axial_force_N,
+        "ring_displacement_m": dist.ring_displacement_m.tolist(),
+        "load_residual": dist.residual,
+        "converged": fr.converged,
+        "failure": fr.failure,
+        "start": fr.start,
+        "runtime_s": fr.runtime_s,
+        "lubricant_state": state.as_dict(),
+    }
+    return point, data
+
+
+def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]], runtime: float,
+                   out: Path) -> dict[str, str]:
+    """results.json, results.csv and the plots of a finished run; returns the files written."""
+    fid = scene.fidelity
+    rib_cells = _rib_cells(fid)
     files = {
         "json": str(atomic_write_json(out / "results.json", {
             "scene": {"name": scene.name, "description": scene.description, "file": scene.source,
                       "resolved": scene.resolved},
-            "bearing": b.designation, "lubricant": scene.lubricant.name, "material": m.name,
+            "bearing": scene.bearing.designation, "lubricant": scene.lubricant.name,
+            "material": scene.material.name,
             "friction_parameters": friction.name,
             "rolling_resistance": friction.model_options(),
             "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
@@ -239,8 +241,7 @@ def _solve_points(scene, fid, out, friction, model, data, cfd_runs, folder, done
         "csv": str(atomic_write_text(out / "results.csv", _csv(points))),
     }
     files.update(_plots(scene, points, out))
-    folder.finish()
-    return RunResult(points=points, files=files, runtime_s=runtime)
+    return files
 
 
 AUTO_LEVELS = ("fast", "default", "fine")  # cheapest first; fine is the reference

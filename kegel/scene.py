@@ -675,12 +675,9 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
         check_each("axial_offset", lambda v: v > 0.0, "a positive axial offset (> 0 m, preload)", as_written)
     if "radial_load" in op:
         check_each("radial_load", lambda v: v >= 0.0, "a radial load >= 0 N", as_written)
-    n_max_rpm = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
-    check_each(
-        "speed", lambda v: 0.0 < abs(v) / RPM_TO_RAD_S <= n_max_rpm,
-        f"a non-zero speed with |n| <= {n_max_rpm:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} "
-        f"rpm mm for bearing {bearing.designation})", as_written,
-    )
+    n_max_rpm = max_speed_rpm(bearing)
+    check_each("speed", lambda v: 0.0 < abs(v) / RPM_TO_RAD_S <= n_max_rpm,
+               f"a non-zero speed with {_speed_limit_text(bearing)}", as_written)
     lo, hi = TEMPERATURE_RANGE_DEGC
     check_each("temperature", lambda v: lo <= v - 273.15 <= hi,
                f"a temperature in [{lo:g}, {hi:g}] degC", as_written)
@@ -734,8 +731,12 @@ def static_equivalent_load_N(g: BearingGeometry, axial_N: float, radial_N: float
     """ISO 76 static equivalent radial load of a single-row tapered roller bearing:
     P0 = 0.5 Fr + Y0 Fa with Y0 = 0.22 cot(alpha) (alpha: the cup angle), and at least Fr.
     (For the 32216, Y0 = 0.79; SKF's catalogue gives 0.8.)"""
-    y0 = 0.22 / math.tan(g.cup_angle_rad)
-    return max(radial_N, 0.5 * radial_N + y0 * axial_N)
+    return max(radial_N, 0.5 * radial_N + _iso76_y0(g) * axial_N)
+
+
+def _iso76_y0(g: BearingGeometry) -> float:
+    """ISO 76 axial load factor Y0 = 0.22 cot(alpha) of a single-row tapered roller bearing."""
+    return 0.22 / math.tan(g.cup_angle_rad)
 
 
 def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[OperatingPoint], bearing: BearingData,
@@ -749,7 +750,8 @@ def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[Opera
         return
     p0 = static_equivalent_load_N(g, worst.axial_load_N, worst.radial_load_N)
     if p0 > bearing.C0r_N:
-        key = "axial_load" if worst.axial_load_N * 0.22 / math.tan(g.cup_angle_rad) >= 0.5 * worst.radial_load_N else "radial_load"
+        # name the load whose term dominates P0
+        key = "axial_load" if _iso76_y0(g) * worst.axial_load_N >= 0.5 * worst.radial_load_N else "radial_load"
         raise reader.error(f"operating.{key}", op[key],
                            f"loads whose ISO 76 static equivalent load P0 stays within C0r = {bearing.C0r_N / 1e3:g} kN "
                            f"of bearing {bearing.designation} (here P0 = {p0 / 1e3:.4g} kN at Fa = "
@@ -763,12 +765,10 @@ def _check_dynamic_profiles(reader: "_Reader", table: dict[str, Any], dyn: "Dyna
     |n| d_m <= MAX_SPEED_FACTOR_RPM_MM (0 allowed: a start from rest), axial loads > 0, radial
     loads >= 0, and the static equivalent load within C0r (a profile to 1e9 rpm or to Fa = 0
     crashed in the run)."""
-    n_max = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
+    n_max = max_speed_rpm(bearing)
     for i, (_, w) in enumerate(dyn.speed_profile):
         if not abs(w) / RPM_TO_RAD_S <= n_max:
-            raise reader.error(f"dynamic.speed_profile[{i}][1]", table["speed_profile"][i][1],
-                               f"|n| <= {n_max:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} rpm mm for bearing "
-                               f"{bearing.designation})")
+            raise reader.error(f"dynamic.speed_profile[{i}][1]", table["speed_profile"][i][1], _speed_limit_text(bearing))
     for i, (_, fa, fr) in enumerate(dyn.load_profile):
         if not fa > 0.0:
             raise reader.error(f"dynamic.load_profile[{i}][1]", table["load_profile"][i][1],
@@ -791,12 +791,20 @@ def check_speed(speed_rad_s: float, bearing: BearingData, *, source: str | Path,
     KegelInputError
         Naming ``source``, ``key`` and the value as written (``text``).
     """
-    n_max_rpm = MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
-    if not (math.isfinite(speed_rad_s) and 0.0 < abs(speed_rad_s) / RPM_TO_RAD_S <= n_max_rpm):
+    if not (math.isfinite(speed_rad_s) and 0.0 < abs(speed_rad_s) / RPM_TO_RAD_S <= max_speed_rpm(bearing)):
         raise KegelInputError(source, key, text if text is not None else speed_rad_s,
-                              f"a non-zero speed with |n| <= {n_max_rpm:.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} "
-                              f"rpm mm for bearing {bearing.designation})")
+                              f"a non-zero speed with {_speed_limit_text(bearing)}")
     return speed_rad_s
+
+
+def max_speed_rpm(bearing: BearingData) -> float:
+    """The largest |n| kegel accepts for ``bearing``: n d_m <= :data:`MAX_SPEED_FACTOR_RPM_MM`."""
+    return MAX_SPEED_FACTOR_RPM_MM / (bearing.pitch_diameter_m * 1e3)
+
+
+def _speed_limit_text(bearing: BearingData) -> str:
+    return (f"|n| <= {max_speed_rpm(bearing):.0f} rpm (n*d_m <= {MAX_SPEED_FACTOR_RPM_MM:.0e} rpm mm for bearing "
+            f"{bearing.designation})")
 
 
 def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overridden: set[str] | None = None) -> Scene:
