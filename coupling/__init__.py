@@ -6,8 +6,8 @@ force elements, so the oil acts on the rollers and the cage; :mod:`.cfd_results`
 result of an operating point.
 """
 
-from .cfd_results import cfd_result_files, find_cfd_result, read_cfd_results
+from .cfd_results import cfd_loss_at, cfd_result_files, find_cfd_result, read_cfd_results
 from .flow_forces import FlowForceLaw, flow_forces_from_cfd, flow_forces_from_correlation
 
-__all__ = ["FlowForceLaw", "cfd_result_files", "find_cfd_result", "flow_forces_from_cfd",
+__all__ = ["FlowForceLaw", "cfd_loss_at", "cfd_result_files", "find_cfd_result", "flow_forces_from_cfd",
            "flow_forces_from_correlation", "read_cfd_results"]

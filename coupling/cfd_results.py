@@ -18,7 +18,7 @@ from typing import Any
 
 from ..errors import KegelInputError
 
-__all__ = ["find_cfd_result", "cfd_result_files", "read_cfd_results"]
+__all__ = ["cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
 
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
@@ -106,3 +106,98 @@ def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad
     have = "; ".join(found) if found else "no kegel cfd results"
     raise KegelInputError(source, key, str(path),
                           f"a CFD result for {want} (found: {have}); run `kegel cfd run` for this point")
+
+
+def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubricant: str, temperature_K: float,
+              oil_level_m: float, flooded: bool) -> list[tuple[float, Path, dict[str, Any]]]:
+    """Results of one bearing, lubricant, temperature and oil level: per speed (0.5 %) the one on
+    the finest mesh, as (speed_rad_s, file, data) sorted by speed."""
+    by_speed: list[tuple[float, Path, dict[str, Any]]] = []
+    for f, data in results:
+        pt = data["point"]
+        level = pt.get("oil_level_m")
+        if not (pt.get("bearing") == bearing and pt.get("lubricant") == lubricant
+                and abs(pt.get("temperature_K", 0.0) - temperature_K) <= TEMPERATURE_TOLERANCE_K
+                and (level is None) == flooded and (flooded or abs(level - oil_level_m) <= OIL_LEVEL_TOLERANCE_M)):
+            continue
+        w = abs(float(pt.get("speed_rad_s", 0.0)))
+        cells = (data.get("fidelity") or {}).get("cells") or 0
+        for i, (w2, _, d2) in enumerate(by_speed):
+            if abs(w / w2 - 1.0) <= SPEED_TOLERANCE:
+                if cells > ((d2.get("fidelity") or {}).get("cells") or 0):
+                    by_speed[i] = (w, f, data)
+                break
+        else:
+            by_speed.append((w, f, data))
+    return sorted(by_speed, key=lambda r: r[0])
+
+
+def _loglog(w: float, w1: float, t1: float, w2: float, t2: float) -> float:
+    """Power-law interpolation T = t1 (w/w1)^k through two points (linear when a torque is <= 0)."""
+    if t1 > 0 and t2 > 0:
+        k = math.log(t2 / t1) / math.log(w2 / w1)
+        return t1 * (w / w1) ** k
+    return t1 + (t2 - t1) * (w - w1) / (w2 - w1)
+
+
+def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lubricant: str, speed_rad_s: float,
+                temperature_K: float, oil_level_m: float, flooded: bool) -> dict[str, Any]:
+    """The CFD loss torque at the shaft for a point: computed, interpolated between computed
+    speeds, or missing.
+
+    Between two computed speeds the loss is interpolated as a power of the speed (a straight line
+    in log-log axes, the form of every drag law). Its error is estimated by leaving out a computed
+    neighbour: each of the two bracketing results that has computed speeds on both sides is
+    predicted from those two, and the larger relative miss is stated (the left-out spacing is wider
+    than the interpolation's, so this over-estimates). With only two computed speeds no estimate
+    exists and the result says so. A speed outside the computed ones is not extrapolated.
+
+    Returns
+    -------
+    dict
+        ``status`` ("computed", "interpolated", "missing"), ``loss_torque_at_shaft_Nm`` (None when
+        missing), ``files``, ``meshes``, ``steady`` (all results used steady), ``error_rel`` (the
+        stated interpolation error; None when computed or unknown), ``note``, ``wall_time_s``
+        (runtime of the CFD results used), ``computed_speeds_rpm``.
+    """
+    rows = _matching(results, bearing, lubricant, temperature_K, oil_level_m, flooded)
+    w = abs(speed_rad_s)
+    speeds = [r[0] for r in rows]
+    base = {"computed_speeds_rpm": [s * 30 / math.pi for s in speeds]}
+
+    def used(idx: list[int]) -> dict[str, Any]:
+        ds = [rows[i][2] for i in idx]
+        return {"files": [str(rows[i][1]) for i in idx],
+                "meshes": [(d.get("fidelity") or {}).get("mesh") for d in ds],
+                "steady": all(d.get("steady") is not False for d in ds),
+                "wall_time_s": sum(float(d.get("chain_wall_time_s") or d.get("runtime_s") or 0.0) for d in ds)}
+
+    def loss(i: int) -> float:
+        return float(rows[i][2]["loss_torque_at_shaft_Nm"])
+
+    for i, s in enumerate(speeds):
+        if abs(w / s - 1.0) <= SPEED_TOLERANCE:
+            return {**base, "status": "computed", "loss_torque_at_shaft_Nm": loss(i), "error_rel": None,
+                    "note": "computed at this speed", **used([i])}
+    j = next((i for i in range(1, len(speeds)) if speeds[i - 1] < w < speeds[i]), None)
+    if j is None:
+        return {**base, "status": "missing", "loss_torque_at_shaft_Nm": None, "error_rel": None, "files": [],
+                "meshes": [], "steady": None, "wall_time_s": 0.0,
+                "note": "no CFD result at this speed and none on both sides to interpolate from"}
+    value = _loglog(w, speeds[j - 1], loss(j - 1), speeds[j], loss(j))
+    misses = []
+    for k in (j - 1, j):
+        if 0 < k < len(speeds) - 1:
+            pred = _loglog(speeds[k], speeds[k - 1], loss(k - 1), speeds[k + 1], loss(k + 1))
+            misses.append(abs(pred / loss(k) - 1.0))
+    meshes = {m for m in used([j - 1, j])["meshes"]}
+    note = (f"interpolated (power law) between {speeds[j - 1] * 30 / math.pi:.0f} and "
+            f"{speeds[j] * 30 / math.pi:.0f} rpm")
+    if misses:
+        note += f"; error estimated by leaving out a computed neighbour: {100 * max(misses):.1f} %"
+    else:
+        note += "; two computed speeds only: no estimate of the interpolation error"
+    if len(meshes) > 1:
+        note += f"; mixed mesh levels {sorted(str(m) for m in meshes)}"
+    return {**base, "status": "interpolated", "loss_torque_at_shaft_Nm": value,
+            "error_rel": max(misses) if misses else None, "note": note, **used([j - 1, j])}

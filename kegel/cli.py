@@ -45,7 +45,7 @@ __all__ = ["main"]
 def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=sys.stdout) -> None:
     def fmt(v: Any) -> str:
         if isinstance(v, float):
-            return f"{v:.6g}"
+            return f"{v:.4g}"  # engineers read 3-4 figures; every digit is in --format json
         return "" if v is None else str(v)
 
     cells = [[fmt(v) for v in row] for row in rows]
@@ -365,9 +365,6 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
 
 def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, lubricant: str, T: float,
                  path: Path, cfd_rows: list[dict[str, Any]] | None = None) -> Path:
-    import os
-    import tempfile
-
     import matplotlib
 
     matplotlib.use("Agg")
@@ -411,12 +408,12 @@ def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, 
     fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC: Liebrecht (Eq. 38-40, 1/min), SKF drag"
                  + (" and kegel CFD" if cfd_rows else ""))
     fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
-    os.close(fd)
-    fig.savefig(tmp, dpi=120)
-    plt.close(fig)
-    os.replace(tmp, path)
+    from .io import atomic_save
+
+    try:
+        atomic_save(path, lambda tmp: fig.savefig(tmp, dpi=120))
+    finally:
+        plt.close(fig)
     return path
 
 
@@ -479,11 +476,11 @@ def _cmd_run(args: argparse.Namespace) -> int:
         return 0
     g = scene.geometry
     f = scene.fidelity
-    print(f"Scene '{scene.name}' ({scene.source})")
+    print(f"Scene '{scene.title}' ({scene.source})")
     if scene.description:
-        print(f"  {scene.description}")
+        print(f"  {scene.description}" + (" (as written in the scene file, before --set)" if scene.overridden else ""))
     print(f"  bearing {g.designation} (Z = {g.roller_count}, contact angle {math.degrees(g.cup_angle_rad):.2f} deg), "
-          f"lubricant {scene.lubricant.name}, {scene.lubrication.mode}"
+          f"lubricant {scene.lubricant.name}, {scene.lubrication_label}"
           + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
     rib = f"rib cell model {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "rib closed-form Hertz"
     solution = "quasi-static" if f.solution == "quasi_static" else f"dynamic ({scene.dynamic.duration_s * 1e3:g} ms)"
@@ -491,6 +488,11 @@ def _cmd_run(args: argparse.Namespace) -> int:
           f"hydraulic {f.hydraulic}")
     rows = []
     for p in result.points:
+        if not p.get("solved", True):
+            rows.append((p["index"], p["speed_rpm"], p["temperature_degC"],
+                         f"{p['axial_load_N'] / 1e3:g}" if p["axial_load_N"] is not None else "",
+                         p["radial_load_N"] / 1e3, *([None] * 9), "FAILED"))
+            continue
         mech = p["torque_by_mechanism_Nm"]
         axial = f"{p['axial_load_N'] / 1e3:g}" if p["axial_load_N"] is not None else f"{p['axial_force_N'] / 1e3:.2f}*"
         rows.append((p["index"], p["speed_rpm"], p["temperature_degC"], axial, p["radial_load_N"] / 1e3,
@@ -511,8 +513,10 @@ def _cmd_run(args: argparse.Namespace) -> int:
         print(f"  point {p['index']} FAILED its plausibility gates: {p.get('failure')}")
     if any(p["axial_load_N"] is None for p in result.points):
         print("  * axial force carried at the prescribed axial offset")
-    print(f"results: {result.files['json']}, {result.files['csv']}")
-    print(f"plots:   {result.files['torque_plot']}, {result.files['breakdown_plot']}, {result.files['loads_plot']}")
+    if scene.study is not None:
+        _print_study(result.points)
+    print(f"results: {', '.join(v for k, v in result.files.items() if not k.endswith('plot'))}")
+    print(f"plots:   {', '.join(v for k, v in result.files.items() if k.endswith('plot'))}")
     if f.solution == "dynamic":
         for p in result.points:
             d = p["dynamic"]
@@ -522,6 +526,43 @@ def _cmd_run(args: argparse.Namespace) -> int:
                   f"{Path(d['files']['json']).parent}")
     print(f"runtime: {result.runtime_s:.2f} s for {len(result.points)} operating point(s)")
     return 0
+
+
+def _print_study(points: list[dict[str, Any]]) -> None:
+    """A study's answers side by side: per operating point and lubrication, the total torque by
+    each hydraulic method (hydraulic loss in brackets, N mm); missing CFD points with their command."""
+    methods: list[str] = []
+    for p in points:
+        for r in p.get("study") or ():
+            if r["method"] not in methods and r["method"] != "none":
+                methods.append(r["method"])
+    label = {"liebrecht": "Liebrecht", "skf": "SKF", "cfd": "CFD"}
+    rows, missing = [], []
+    for p in points:
+        cases: dict[str, dict[str, Any]] = {}
+        for r in p.get("study") or ():
+            cases.setdefault(r["lubrication"], {})[r["method"]] = r
+        for case, by in cases.items():
+            cells = []
+            for m in methods:
+                r = by.get(m) or by.get("none")
+                if r is None or r.get("total_torque_Nm") is None:
+                    cells.append("missing" if r is not None else "")
+                    if r is not None and r.get("command"):
+                        missing.append(r["command"])
+                    continue
+                mark = {"interpolated": "~", "computed": ""}.get(r.get("status"), "")
+                err = f" +-{100 * r['error_rel']:.0f}%" if r.get("error_rel") else ""
+                cells.append(f"{mark}{r['total_torque_Nm']:.4g} ({1e3 * r['hydraulic_torque_Nm']:.3g}){err}")
+            rows.append((p["index"], f"{p['speed_rpm']:.0f}", f"{p['temperature_degC']:g}", case.replace("_", " "),
+                         f"{p['friction_torque_Nm']:.4g}", *cells))
+    print("\nStudy: total torque at the shaft [N m] (hydraulic loss [N mm]) by lubrication and method; "
+          "~ CFD interpolated (+- its stated error)")
+    _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "M_fric [Nm]", *(label[m] for m in methods)), rows)
+    if missing:
+        print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")
+        for c in missing[:5]:
+            print(f"    {c}")
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -490,17 +490,11 @@ def _load_checkpoint(path: Path, key: str, shape: tuple) -> dict[str, Any] | Non
 
 def _save_checkpoint(path: Path, t: float, y: np.ndarray, times: list, states: list, quads: list,
                      rows: dict, key: str) -> None:
-    import tempfile
+    from .io import atomic_save
 
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=".tmp.npz", dir=path.parent)
-    os.close(fd)
-    try:
-        np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states), quads=np.asarray(quads),
-                 rows=json.dumps(rows), key=key)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    atomic_save(path, lambda tmp: np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states),
+                                           quads=np.asarray(quads), rows=json.dumps(rows), key=key),
+                suffix=".tmp.npz")
 
 
 def _divergence_report(res: DynamicResult, message: str) -> str:

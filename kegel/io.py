@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import platform
+import sys
 import tempfile
 from datetime import datetime, timezone
 from pathlib import Path
@@ -12,15 +13,55 @@ from typing import Any
 
 from . import _core
 
-__all__ = ["atomic_write_text", "atomic_write_json", "provenance", "RunFolder", "OutputLocked"]
+__all__ = ["atomic_write_text", "atomic_write_json", "atomic_save", "file_mode", "provenance", "RunFolder",
+           "OutputLocked", "temp_beside"]
+
+
+def file_mode() -> int:
+    """The mode a new file gets from ``open()``: 0o666 less the process's umask (mkstemp's
+    temporary files are 0o600 whatever the umask; results must be readable as any file is)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+def temp_beside(path: str | Path, suffix: str = ".tmp") -> tuple[int, str]:
+    """A hidden temporary file next to ``path`` (same folder, so the final rename is atomic),
+    with the umask's mode (see :func:`file_mode`); returns the open descriptor and its name."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=suffix, dir=path.parent)
+    try:
+        os.fchmod(fd, file_mode())
+    except BaseException:
+        os.close(fd)
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return fd, tmp
+
+
+def atomic_save(path: str | Path, write: Any, suffix: str | None = None) -> Path:
+    """Write ``path`` atomically with ``write(tmp_name)`` (e.g. ``fig.savefig``, ``np.savez``):
+    a temporary file beside it, then a rename; the temporary file is removed on any failure
+    or interrupt, and the file gets the umask's mode."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = temp_beside(path, suffix if suffix is not None else path.suffix)
+    os.close(fd)
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
 
 
 def atomic_write_text(path: str | Path, text: str) -> Path:
     """Write ``text`` to ``path`` through a temporary file in the same folder and a rename,
-    so that a reader never sees a half-written file."""
+    so that a reader never sees a half-written file (mode: see :func:`file_mode`)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    fd, tmp = temp_beside(path, ".tmp")
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
             fh.write(text)
@@ -82,6 +123,8 @@ class RunFolder:
         self.run_id = os.urandom(8).hex()
         self._lock_fd: int | None = None
         self._stream = None
+        #: the run whose results this run replaces (None: an empty folder or a resumed run)
+        self.replaced: str | None = None
 
     def open(self) -> dict[int, dict[str, Any]]:
         """Take the folder; returns the finished points of an interrupted run with the same key.
@@ -114,6 +157,11 @@ class RunFolder:
         if stream.is_file():
             done = _read_stream(stream, self.key)
         if not done:
+            self.replaced = _previous_run(self.path / "results.json")
+            if self.replaced:
+                # an explicit policy, never a silent overwrite: say whose results are replaced
+                print(f"kegel: {self.path} holds the results of another run ({self.replaced}): they are replaced "
+                      "(choose another --output to keep them)", file=sys.stderr)
             for name in (*self.summary_files, self.STREAM):
                 (self.path / name).unlink(missing_ok=True)
             for pattern in (".*.tmp", ".*.png"):  # temporary files of an interrupted write
@@ -155,6 +203,20 @@ class RunFolder:
 
     def __exit__(self, *exc: Any) -> None:
         self.close()
+
+
+def _previous_run(results: Path) -> str | None:
+    """A short description of the run whose ``results.json`` is in a folder (None without one)."""
+    if not results.is_file():
+        return None
+    try:
+        data = json.loads(results.read_text())
+        scene = data.get("scene") or {}
+        title = scene.get("title") or scene.get("name") or "?"
+        created = (data.get("provenance") or {}).get("created_utc", "?")
+        return f"scene '{title}', run id {data.get('run_id') or '?'}, created {created}"
+    except (OSError, ValueError, AttributeError):
+        return "an unreadable results.json"
 
 
 def _lock_owner(lock: Path) -> int | None:

@@ -29,12 +29,16 @@ from .correlations import hydraulic_torques
 from .dynamics import CONTACTS, MECHANISMS
 from .io import atomic_write_json, atomic_write_text, provenance
 from .lubricant import lubricant_state
+from .errors import KegelSolverError
+from .dynamics import SimulationDiverged
+from .point_warnings import Warning_, WarningLog, point_warnings
 from .quasi_static import bearing_friction, bearing_model
+from .study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_rows
 from .scene import Fidelity, Scene
 from .tribology import cage_speed_rad_s, load_friction
 from . import _core
 
-__all__ = ["RunResult", "choose_fidelity", "run_scene"]
+__all__ = ["RunResult", "choose_fidelity", "preflight", "run_scene"]
 
 CONTACTS_WITH_CAGE = CONTACTS + ("cage",)
 
@@ -95,7 +99,9 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     friction = _friction(fid)
     model = bearing_model(g, b, m, slices=fid.slices, method=fid.slice_model)
     data = _core.quasi_static.BearingData(model)
-    cfd_runs = _read_cfd_runs(scene)
+    cfd_runs = preflight(scene)
+    study_cfd = read_study_cfd(scene)
+    warn_log = WarningLog()
     folder, done = _open_folder(scene, fid, out) if write else (None, {})
     try:
         bar = _Progress(len(scene.operating_points), progress)
@@ -106,12 +112,24 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 # finished by an interrupted run of the same scene, fidelity and version (a point's
                 # answer does not depend on the points solved before it)
                 points.append(done[op.index])
+                warn_log.add(op.index, [Warning_(**w) for w in done[op.index].get("warnings", ())])
                 bar.update(len(points), label + " (resumed)")
                 continue
-            if fid.solution == "dynamic":
-                point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
-            else:
-                point, data = _quasi_static_record(scene, fid, op, friction, model, data, cfd_runs)
+            try:
+                if fid.solution == "dynamic":
+                    point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
+                else:
+                    point, data = _quasi_static_record(scene, fid, op, friction, model, data, cfd_runs)
+            except (KegelSolverError, SimulationDiverged) as exc:
+                # the run keeps the points that finished and goes on: this one is recorded as
+                # failed with the solver's message (and never warm-starts the next point)
+                point = _failed_record(op, exc)
+                data = _core.quasi_static.BearingData(model)
+            if scene.study is not None and point.get("solved", True):
+                point["study"] = study_rows(scene, point, study_cfd)
+            warns = point_warnings(scene, point, friction)
+            point["warnings"] = [w.as_dict() for w in warns]
+            warn_log.add(op.index, warns)
             points.append(point)
             if folder is not None:
                 folder.add(point)
@@ -119,15 +137,46 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 on_point(point)
             bar.update(len(points), label)
         bar.close()
+        if warn_log.counts and progress:
+            print("kegel: each warning is printed once; points with it: "
+                  + ", ".join(f"{k} {v}" for k, v in warn_log.counts.items())
+                  + f" of {len(points)} (every point's warnings: results.json, results.csv)", file=sys.stderr)
         runtime = time.perf_counter() - t_start
         if folder is None:
             return RunResult(points=points, files={}, runtime_s=runtime)
-        files = _write_summary(scene, friction, choice, points, runtime, out)
+        files = _write_summary(scene, friction, choice, points, runtime, out, warn_log.summary(),
+                               folder.run_id)
         folder.finish()
         return RunResult(points=points, files=files, runtime_s=runtime)
     finally:
         if folder is not None:
             folder.close()
+
+
+def preflight(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
+    """Everything a run would reject, checked for every point before anything runs (``kegel
+    check`` calls it too): with ``hydraulic = "cfd"``, each operating point's CFD result.
+    Returns the CFD results read (None without them).
+
+    Raises
+    ------
+    KegelInputError
+        The first point without its CFD result (the message lists those found).
+    """
+    runs = _read_cfd_runs(scene)
+    if runs is not None:
+        for op in scene.operating_points:
+            _cfd_result(scene, op, runs)
+    return runs
+
+
+def _failed_record(op, exc: Exception) -> dict[str, Any]:
+    """The record of a point whose solver raised: the operating point, ``converged`` false, the
+    message as ``failure``, no figures (None, empty in the CSV)."""
+    msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+    return {**op.as_dict(), "friction_torque_Nm": None, "hydraulic_torque_Nm": None, "total_torque_Nm": None,
+            "converged": False, "failure": f"{type(exc).__name__}: {msg}", "solved": False,
+            "torque_by_contact_Nm": {}, "torque_by_mechanism_Nm": {}}
 
 
 def _open_folder(scene: Scene, fid: Fidelity, out: Path):
@@ -161,9 +210,7 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
     dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
     if not fr.converged:
         # never warm-start the next point from a failed one
-        data = _core.quasi_static.BearingData(model)
-        print(f"kegel: point {op.index} (n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC) failed its "
-              f"plausibility gates and is reported as failed: {fr.failure}", file=sys.stderr)
+        data = _core.quasi_static.BearingData(model)  # (reported through its not_converged warning)
     state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
     hyd = None
     if fid.hydraulic == "correlation" and scene.lubrication.oil_level_m > 0:
@@ -218,30 +265,66 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
 
 
 def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]], runtime: float,
-                   out: Path) -> dict[str, str]:
-    """results.json, results.csv and the plots of a finished run; returns the files written."""
+                   out: Path, warnings: dict[str, int] | None = None, run_id: str | None = None) -> dict[str, str]:
+    """results.json, results.csv and the plots of a finished run (and a study's table and plot);
+    returns the files written."""
     fid = scene.fidelity
     rib_cells = _rib_cells(fid)
     files = {
         "json": str(atomic_write_json(out / "results.json", {
-            "scene": {"name": scene.name, "description": scene.description, "file": scene.source,
-                      "resolved": scene.resolved},
+            "scene": {"name": scene.name, "title": scene.title, "description": scene.description,
+                      "description_note": ("as written in the scene file; --set changed "
+                                           + ", ".join(scene.overridden)) if scene.overridden else None,
+                      "file": scene.source, "overridden": list(scene.overridden), "resolved": scene.resolved},
+            "run_id": run_id,
             "bearing": scene.bearing.designation, "lubricant": scene.lubricant.name,
             "material": scene.material.name,
             "friction_parameters": friction.name,
             "rolling_resistance": friction.model_options(),
-            "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m},
+            "lubrication": {"mode": scene.lubrication.mode, "oil_level_m": scene.lubrication.oil_level_m,
+                            "label": scene.lubrication_label},
+            **({"study": scene.study.as_dict()} if scene.study is not None else {}),
             "fidelity": {**fid.as_dict(), "solution_used": fid.solution,
                          **({"dynamic": scene.dynamic.as_dict()} if fid.solution == "dynamic" else {}),
                          "rib_load_model": "hertz (load distribution); friction: "
                                            + (f"cell model {rib_cells} x {rib_cells}" if rib_cells else "one ellipse")},
             **({"fidelity_choice": choice} if choice else {}),
-            "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime, "points": points,
+            "swept": list(scene.swept), "provenance": provenance(), "runtime_s": runtime,
+            "warnings": {"points_per_code": warnings or {},
+                         "note": "each point's warnings are in its record and in results.csv; codes: "
+                                 "kegel.point_warnings"},
+            "points": points,
         })),
         "csv": str(atomic_write_text(out / "results.csv", _csv(points))),
     }
-    files.update(_plots(scene, points, out))
+    solved = [p for p in points if p.get("solved", True)]  # points whose solver raised have no figures
+    if solved:
+        files.update(_plots(scene, solved, out))
+    if scene.study is not None:
+        files["study_csv"] = str(atomic_write_text(out / "study.csv", study_csv(points)))
+        if solved:
+            files["study_plot"] = study_plot(solved, _study_plot_meta(scene), out / "study.png")
     return files
+
+
+#: The swept quantity of a plot's x axis: record key, axis label, scale.
+X_AXES = {
+    "speed": ("speed_rpm", "shaft speed [rpm]", 1.0),
+    "radial_load": ("radial_load_N", "radial load [kN]", 1e-3),
+    "axial_load": ("axial_load_N", "axial load [kN]", 1e-3),
+    "axial_offset": ("axial_offset_m", "axial offset [um]", 1e6),
+    "temperature": ("temperature_degC", "temperature [degC]", 1.0),
+    None: ("index", "operating point", 1.0),
+}
+
+
+def _study_plot_meta(scene: Scene) -> dict[str, Any]:
+    sweep = next((s for s in scene.swept if s != "temperature"), None) or (scene.swept[0] if scene.swept else None)
+    xk, xl, xs = X_AXES[sweep]
+    return {"title": f"{scene.title} ({scene.bearing.designation}, {scene.lubricant.name}, fidelity "
+                     f"{scene.fidelity.name})", "x_key": xk, "x_label": xl, "x_scale": xs,
+            "cases": ["minimum_quantity" if c.mode == "minimum_quantity" else c.oil_level_as_written
+                      for c in scene.study.cases]}
 
 
 AUTO_LEVELS = ("fast", "default", "fine")  # cheapest first; fine is the reference
@@ -452,19 +535,45 @@ def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tu
                            source=scene.source, key="model.cfd_results", results=runs)
 
 
+#: results.csv: the point's own columns, then the derived ones (see _csv_row).
+CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
+               "tilt_moment_Nm", "misalignment_rad", "axial_force_N", "friction_torque_Nm", "hydraulic_torque_Nm",
+               "total_torque_Nm", "converged", "failure", "cage_model", "pocket_fraction", "cage_speed_rpm",
+               "cage_slip", "power_input_W", "power_balance_error", "start")
+CSV_DERIVED = ("Lambda_min", "Lambda_min_contact", "hydraulic_source", "hydraulic_inner_ring_Nm",
+               "hydraulic_outer_ring_Nm", "hydraulic_cage_Nm", "skf_rolling_sliding_Nm", "skf_drag_Nm",
+               "skf_total_Nm", "warnings")
+
+
+def _csv_row(p: dict[str, Any]) -> list[Any]:
+    lam = p.get("Lambda_min") or {}
+    worst = min(lam, key=lambda k: lam[k]) if isinstance(lam, dict) and lam else None
+    hyd = p.get("hydraulic") or {}
+    skf = p.get("skf_catalogue_model") or {}
+    tq = hyd.get("torques_Nm") or {}
+    src = hyd.get("source") or hyd.get("correlation")
+    derived = [lam[worst] if worst else None, worst, src,
+               hyd.get("inner_ring_Nm", (tq.get("inner_ring") or {}).get("total")),
+               hyd.get("outer_ring_Nm", (tq.get("outer_ring") or {}).get("total")),
+               hyd.get("cage_Nm", (tq.get("cage") or {}).get("total")),
+               skf.get("rolling_sliding_Nm"), skf.get("drag_Nm"), skf.get("total_Nm"),
+               "; ".join(w["code"] for w in p.get("warnings", ()))]
+    row = [p.get(c) for c in CSV_COLUMNS] + derived
+    row += [(p.get("torque_by_contact_Nm") or {}).get(c) for c in CONTACTS_WITH_CAGE]
+    row += [(p.get("torque_by_mechanism_Nm") or {}).get(k) for k in MECHANISMS]
+    return ["" if v is None else v for v in row]
+
+
 def _csv(points: list[dict[str, Any]]) -> str:
-    cols = ["index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
-            "axial_force_N", "friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm", "cage_speed_rpm",
-            "cage_slip", "power_input_W", "power_balance_error"]
+    """results.csv: one row per operating point, every scalar of its record (the per-roller
+    arrays are in results.json); the warnings column lists the point's warning codes."""
+    cols = [*CSV_COLUMNS, *CSV_DERIVED]
     cols += [f"torque_{c}_Nm" for c in CONTACTS_WITH_CAGE] + [f"torque_{k}_Nm" for k in MECHANISMS]
     buf = io.StringIO()
     w = csv.writer(buf)
     w.writerow(cols)
     for p in points:
-        row = [p.get(c) for c in cols[:14]]
-        row += [p["torque_by_contact_Nm"][c] for c in CONTACTS_WITH_CAGE]
-        row += [p["torque_by_mechanism_Nm"][k] for k in MECHANISMS]
-        w.writerow(["" if v is None else v for v in row])
+        w.writerow(_csv_row(p))
     return buf.getvalue()
 
 
@@ -481,7 +590,8 @@ def _save(fig, path: Path) -> str:
 
 
 #: The summary files of a run (written at its end, all together).
-SUMMARY_FILES = ("results.json", "results.csv", "torque.png", "breakdown.png", "roller_loads_and_slip.png")
+SUMMARY_FILES = ("results.json", "results.csv", "torque.png", "breakdown.png", "roller_loads_and_slip.png",
+                 *STUDY_FILES)
 
 
 def _plots(scene: Scene, points: list[dict[str, Any]], out: Path) -> dict[str, str]:

@@ -52,6 +52,20 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
 
     [output]
     directory = "results/32216_table1"       # optional
+
+A study compares lubrications and hydraulic-loss methods at the same operating points: a
+``[study]`` table replaces ``[lubrication]`` (and ``model.hydraulic``); the contact friction is
+solved once per operating point (kegel's contact model does not depend on the oil level; a
+starved inlet is ``model.inlet_gap_ratio``) and every lubrication x method pair adds its
+hydraulic loss::
+
+    [study]
+    lubrication = ["flooded", "shaft_center", "minimum_quantity"]   # oil levels as above, or
+                                             # minimum_quantity (no oil bath: no hydraulic loss)
+    hydraulic = ["liebrecht", "skf", "cfd"]  # methods (default: liebrecht and skf)
+    cfd_results = "results/cfd"              # with "cfd": kegel cfd run results; speeds between
+                                             # computed ones are interpolated (error stated),
+                                             # missing ones named with the command that makes them
 """
 
 from __future__ import annotations
@@ -76,6 +90,8 @@ from .tribology import ROLLING_THERMAL_MODELS
 from .units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
+    "HYDRAULIC_METHODS",
+    "Study",
     "DYNAMIC_PRESETS",
     "DynamicSettings",
     "FIDELITY_PRESETS",
@@ -116,7 +132,11 @@ _ALLOWED: dict[str, set[str]] = {
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
+    "study": {"lubrication", "hydraulic", "cfd_results"},
 }
+#: Hydraulic-loss methods a study compares: Liebrecht's correlation (seed paper Eq. 38-40), the
+#: SKF catalogue model's drag moment, kegel's OpenFOAM results.
+HYDRAULIC_METHODS = ("liebrecht", "skf", "cfd")
 _REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
 _SWEEPABLE = ("axial_load", "axial_offset", "radial_load", "speed", "temperature")
 _OIL_LEVEL_WORDS = ("none", "half_roller", "shaft_center", "flooded")
@@ -336,6 +356,32 @@ class Lubrication:
 
 
 @dataclass(frozen=True)
+class Study:
+    """The ``[study]`` table: lubrications and hydraulic methods compared at every operating point.
+
+    Attributes
+    ----------
+    cases
+        The lubrications, in the scene's order (``mode`` ``"minimum_quantity"`` or ``"oil_bath"``).
+    methods
+        Hydraulic-loss methods, a subset of :data:`HYDRAULIC_METHODS` in the scene's order.
+    cfd_results
+        With ``"cfd"``: the folder (or file) of ``kegel cfd run`` results; it may not exist yet
+        (the run then names the CFD runs that are missing).
+    """
+
+    cases: tuple["Lubrication", ...]
+    methods: tuple[str, ...]
+    cfd_results: str | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        """Plain dictionary, written next to the results."""
+        return {"lubrication": [{"mode": c.mode, "oil_level_m": c.oil_level_m, "as_written": c.oil_level_as_written}
+                                for c in self.cases],
+                "hydraulic": list(self.methods), "cfd_results": self.cfd_results}
+
+
+@dataclass(frozen=True)
 class OperatingPoint:
     """One operating point of a scene, in SI units.
 
@@ -395,11 +441,43 @@ class Scene:
     output_directory: Path
     resolved: dict[str, Any] = field(repr=False, compare=False)
     dynamic: DynamicSettings = field(default_factory=DynamicSettings)
+    study: Study | None = None
+    #: the dotted keys ``--set`` changed (the name and description are the file's words)
+    overridden: tuple[str, ...] = ()
+
+    @property
+    def title(self) -> str:
+        """The scene's name, with the ``--set`` changes when there are any: a title must not
+        say "Fa = 6 kN" or "flooded" for a run that ``--set`` changed."""
+        if not self.overridden:
+            return self.name
+        changes = ", ".join(f"{k}={_shown(self.resolved, k)}" for k in self.overridden)
+        return f"{self.name} [--set {changes}]"
+
+    @property
+    def lubrication_label(self) -> str:
+        """The lubrication as resolved, e.g. ``"oil bath, flooded"``, ``"minimum quantity"``."""
+        if self.study is not None:
+            return "study: " + ", ".join(_case_label(c) for c in self.study.cases)
+        return _case_label(self.lubrication)
 
     @cached_property
     def geometry(self) -> BearingGeometry:
         """The bearing's derived internal geometry."""
         return derive_geometry(self.bearing, self.material)
+
+
+def _case_label(lub: "Lubrication") -> str:
+    if lub.mode == "minimum_quantity":
+        return "minimum quantity"
+    return f"oil bath, {lub.oil_level_as_written}"
+
+
+def _shown(raw: dict[str, Any], dotted: str) -> str:
+    node: Any = raw
+    for part in dotted.split("."):
+        node = node.get(part) if isinstance(node, dict) else None
+    return str(node)
 
 
 def _set_dotted(raw: dict[str, Any], dotted: str, value: Any) -> None:
@@ -513,8 +591,15 @@ def _check_keys(reader: _Reader, raw: dict[str, Any]) -> None:
                 raise reader.error(f"{section}.{key}", value[key],
                                    f"a known key of [{section}] ({', '.join(sorted(_ALLOWED[section]))})")
     for section in _REQUIRED_SECTIONS:
-        if section not in raw:
+        if section not in raw and not (section == "lubrication" and "study" in raw):
             raise reader.error(section, None, f"a table [{section}]")
+    if "study" in raw:
+        if "lubrication" in raw:
+            raise reader.error("lubrication", "(table)", "no [lubrication] table beside [study] "
+                               "(study.lubrication lists the lubrications compared)")
+        if "hydraulic" in raw.get("model", {}):
+            raise reader.error("model.hydraulic", raw["model"]["hydraulic"],
+                               "no value beside [study] (study.hydraulic lists the methods compared)")
 
 
 AUTO_TOLERANCE = 0.01
@@ -620,6 +705,47 @@ def resolve_oil_level(written: Any, bearing: BearingData, *, source: str | Path,
             f"outer diameter of bearing {bearing.designation}",
         )
     return level
+
+
+def _study(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Study:
+    cases = table.get("lubrication")
+    if not isinstance(cases, list) or not cases:
+        raise reader.error("study.lubrication", cases, "a list of lubrications, e.g. [\"flooded\", "
+                           "\"shaft_center\", \"minimum_quantity\"] (oil levels or minimum_quantity)")
+    out: list[Lubrication] = []
+    for i, c in enumerate(cases):
+        key = f"study.lubrication[{i}]"
+        if c in ("minimum_quantity", "none"):
+            lub = Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none")
+        else:
+            if not isinstance(c, str):
+                raise reader.error(key, c, f"minimum_quantity or an oil level ({', '.join(_OIL_LEVEL_WORDS[1:])}, "
+                                   "or a length in (0, D])")
+            level = resolve_oil_level(c, bearing, source=reader.src("study.lubrication"), key=key)
+            if level == 0.0:
+                raise reader.error(key, c, "an oil level > 0 (minimum_quantity for no oil bath)")
+            lub = Lubrication(mode="oil_bath", oil_level_m=level, oil_level_as_written=c)
+        if any(lub.mode == o.mode and abs(lub.oil_level_m - o.oil_level_m) < 1e-9 for o in out):
+            raise reader.error(key, c, "a lubrication not listed before (each case once)")
+        out.append(lub)
+    methods = table.get("hydraulic", ["liebrecht", "skf"])
+    if isinstance(methods, str):
+        methods = [methods]
+    if not isinstance(methods, list) or not methods:
+        raise reader.error("study.hydraulic", methods, f"a list of methods among {', '.join(HYDRAULIC_METHODS)}")
+    for i, m in enumerate(methods):
+        if m not in HYDRAULIC_METHODS:
+            raise reader.error(f"study.hydraulic[{i}]", m, f"one of {', '.join(HYDRAULIC_METHODS)}")
+    if len(set(methods)) != len(methods):
+        raise reader.error("study.hydraulic", methods, "each method once")
+    cfd = table.get("cfd_results")
+    if "cfd" in methods:
+        if not isinstance(cfd, str) or not cfd:
+            raise reader.error("study.cfd_results", cfd, 'a folder (or results.json) of kegel cfd run results, '
+                               'needed by hydraulic "cfd" (it may not exist yet: the run names the missing runs)')
+    elif cfd is not None:
+        raise reader.error("study.cfd_results", cfd, 'no value unless study.hydraulic lists "cfd"')
+    return Study(cases=tuple(out), methods=tuple(methods), cfd_results=cfd)
 
 
 def _lubrication(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Lubrication:
@@ -744,6 +870,20 @@ def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[Opera
     """Loads against the basic static load rating C0r: the contact models are elastic, and a
     static equivalent load above C0r (ISO 76: 4000 MPa at the most loaded roller contact) means
     permanent deformation of the raceways. Displacement-controlled points are checked in the run."""
+    # a single TRB under a force-controlled axial load needs Fa / Fr > tan(alpha_o) (one roller
+    # carrying everything); below it the inner ring lifts off (checked for every point here, not
+    # at the point in the run: kegel check must reject what kegel run would)
+    tan_a = math.tan(g.cup_angle_rad)
+    lift = next((p for p in points if p.axial_load_N is not None and p.radial_load_N > 0
+                 and p.axial_load_N / p.radial_load_N <= tan_a), None)
+    if lift is not None:
+        key = "radial_load" if "radial_load" in op else "axial_load"
+        raise reader.error(f"operating.{key}", op[key],
+                           f"Fa / Fr > tan(alpha_o) = {tan_a:.3f} at every point for a single tapered roller bearing "
+                           f"(point {lift.index}: Fa = {lift.axial_load_N / 1e3:.4g} kN, Fr = "
+                           f"{lift.radial_load_N / 1e3:.4g} kN, ratio {lift.axial_load_N / lift.radial_load_N:.3f}: "
+                           "the inner ring would lift off); use operating.axial_offset (displacement-controlled) "
+                           "for such load cases")
     worst = max((p for p in points if p.axial_load_N is not None),
                 key=lambda p: static_equivalent_load_N(g, p.axial_load_N, p.radial_load_N), default=None)
     if worst is None:
@@ -835,7 +975,10 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
     for T in sorted({p.temperature_K for p in points}):
         # the oil's formulas must hold at every temperature of the scene (checked now, not in the run)
         lubricant_state(lubricant, T, source=reader.src("operating.temperature"), key="operating.temperature")
-    lubrication = _lubrication(reader, raw["lubrication"], bearing)
+    study = _study(reader, raw["study"], bearing) if "study" in raw else None
+    # a study solves the contact friction alone; its lubrications add their hydraulic losses
+    lubrication = (_lubrication(reader, raw["lubrication"], bearing) if study is None else
+                   Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none"))
     fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
     dynamic = _dynamic(reader, raw.get("dynamic", {}))
     _check_dynamic_profiles(reader, raw.get("dynamic", {}), dynamic, bearing, g)
@@ -859,6 +1002,8 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
         output_directory=Path(out),
         resolved=raw,
         dynamic=dynamic,
+        study=study,
+        overridden=tuple(sorted(overridden or ())),
     )
 
 

@@ -1,0 +1,192 @@
+"""Warnings of a result: what a reader must know before trusting a point's figures.
+
+Every warning has a code and a message. :func:`point_warnings` gives a point's warnings (they go
+into ``results.json`` and the ``warnings`` column of ``results.csv``); :class:`WarningLog` prints
+each code once per run on stderr and counts the points that carry it.
+
+Codes
+-----
+``not_converged``
+    The point failed its plausibility gates (power, force or moment balance, torque sign): its
+    figures are not an answer (the record keeps them, with the residuals, for diagnosis).
+``cage_pocket_fallback``
+    The free-roller cage solution failed its balances; the cage pockets carry every roller.
+``mixed_lubrication``
+    A contact's film parameter Lambda < 1: asperity contact carries load and the solid friction
+    parameters (textbook values, marked ``verify``) enter the answer.
+``outside_compared_range``
+    The point lies outside the conditions at which kegel's friction torque has been compared with
+    anything outside kegel (:data:`COMPARED_RANGE`: the SKF catalogue model at the seed paper's
+    Table 1-3 conditions; no measured torque has been usable so far, see ``kegel validate``).
+``parameters_to_verify``
+    Friction or lubricant parameters marked ``verify = true`` in their data files (textbook values
+    not yet confirmed for this pair) enter the answer.
+``skf_constants_to_verify``
+    The SKF catalogue model shown beside kegel uses constants marked ``verify``
+    (``kegel.correlations.skf.VERIFY``).
+``liebrecht_extrapolated``
+    Liebrecht's correlation (seed paper Eq. 38-40) was fitted on a 32208 with a vertical shaft:
+    another bearing, or a partial oil level of a horizontal shaft, is an extrapolation.
+``cfd_not_steady``
+    The CFD result used did not reach a steady loss torque.
+``cfd_interpolated`` / ``cfd_missing``
+    A study's CFD loss interpolated between computed speeds (with its error), or not computed.
+"""
+
+from __future__ import annotations
+
+import sys
+import tomllib
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+from typing import Any, TextIO
+
+__all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables"]
+
+#: Conditions at which kegel's friction torque has been compared with an outside answer: the SKF
+#: catalogue model at the seed paper's Table 1-3 points (``kegel validate``; examples/32216_table*.toml:
+#: 32216, d_m = 108.5 mm, 500-4000 rpm, FVA 3 at 42 and 50 degC, nu = 60.6-87.7 mm^2/s).
+#: ``tests/python/test_outputs.py`` recomputes them from the example scenes.
+COMPARED_RANGE = {
+    "speed_factor_rpm_mm": (5.4e4, 4.4e5),        # n d_m
+    "nu_n_mm2_s_rpm": (3.0e4, 3.55e5),            # nu n, the EHL film's speed-viscosity variable
+}
+
+
+@dataclass(frozen=True)
+class Warning_:
+    """One warning of a point: a code (see the module docstring) and a message."""
+
+    code: str
+    message: str
+
+    def as_dict(self) -> dict[str, str]:
+        """JSON-ready form."""
+        return {"code": self.code, "message": self.message}
+
+
+@lru_cache(maxsize=16)
+def verify_tables(path: str) -> tuple[str, ...]:
+    """The tables of a data file marked ``verify = true`` (empty when it cannot be read)."""
+    try:
+        raw = tomllib.loads(Path(path).read_text())
+    except (OSError, tomllib.TOMLDecodeError):
+        return ()
+    out: list[str] = []
+
+    def walk(node: dict[str, Any], prefix: str) -> None:
+        for k, v in node.items():
+            if isinstance(v, dict):
+                if v.get("verify") is True:
+                    out.append(prefix + k)
+                walk(v, prefix + k + ".")
+
+    walk(raw, "")
+    return tuple(out)
+
+
+def liebrecht_warning(bearing: str, flooded: bool) -> Warning_ | None:
+    """The ``liebrecht_extrapolated`` warning for a bearing and oil level, or None."""
+    why = []
+    if bearing != "32208":
+        why.append(f"bearing {bearing} (fitted on a 32208)")
+    if not flooded:
+        why.append("a partial oil level of a horizontal shaft (fitted with a vertical shaft)")
+    if not why:
+        return None
+    return Warning_("liebrecht_extrapolated",
+                    "Liebrecht's correlation (Eq. 38-40) is extrapolated here: " + "; ".join(why))
+
+
+def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> list[Warning_]:
+    """The warnings of one operating point's record (see the module docstring).
+
+    Parameters
+    ----------
+    scene
+        The :class:`kegel.scene.Scene` the point belongs to.
+    point
+        The point's record (``kegel.run``): ``converged``, ``failure``, ``cage_model``,
+        ``Lambda_min``, ``skf_catalogue_model``, ``hydraulic``, speeds and temperature.
+    friction
+        The friction parameters used (:class:`kegel.FrictionData`), for ``parameters_to_verify``.
+    """
+    out: list[Warning_] = []
+    if point.get("converged") is False:
+        out.append(Warning_("not_converged", f"point {point.get('index')} failed its plausibility gates "
+                            f"({point.get('failure') or 'see the record'}): its figures are not an answer"))
+    if scene.fidelity.cage is True and point.get("cage_model") == "pocket":
+        out.append(Warning_("cage_pocket_fallback", "the free-roller cage solution failed its balances: the cage "
+                            "pockets carry every roller (pocket model)"))
+    lam = point.get("Lambda_min") or {}
+    if isinstance(lam, dict) and lam:
+        worst = min(lam, key=lambda k: lam[k])
+        if lam[worst] < 1.0:
+            out.append(Warning_("mixed_lubrication", f"film parameter Lambda = {lam[worst]:.2f} < 1 at the "
+                                f"{worst.replace('_', ' ')} contact: mixed lubrication, the solid friction "
+                                "parameters (textbook values) carry part of the answer"))
+    d_m_mm = scene.geometry.pitch_diameter_m * 1e3
+    n = abs(point["speed_rpm"])
+    nu = (point.get("lubricant_state") or {}).get("kinematic_viscosity_m2_s")
+    outside = []
+    lo, hi = COMPARED_RANGE["speed_factor_rpm_mm"]
+    if not lo <= n * d_m_mm <= hi:
+        outside.append(f"n d_m = {n * d_m_mm:.3g} rpm mm (compared: {lo:.3g}-{hi:.3g})")
+    if nu is not None:
+        lo, hi = COMPARED_RANGE["nu_n_mm2_s_rpm"]
+        v = nu * 1e6 * n
+        if not lo <= v <= hi:
+            outside.append(f"nu n = {v:.3g} mm^2/s rpm (compared: {lo:.3g}-{hi:.3g})")
+    if outside:
+        out.append(Warning_("outside_compared_range", "outside the conditions kegel's friction torque has been "
+                            "compared at (SKF model, Tables 1-3; no measured torque yet): " + "; ".join(outside)))
+    marked = []
+    for name, path in ((getattr(friction, "name", None), getattr(friction, "source_file", None)),
+                       (scene.lubricant.name, getattr(scene.lubricant, "source_file", None))):
+        tables = verify_tables(path) if path else ()
+        if tables:
+            marked.append(f"{name} ({', '.join(tables)})")
+    if marked:
+        out.append(Warning_("parameters_to_verify", "parameters marked verify (textbook values, not confirmed "
+                            "for this pair) enter the answer: " + "; ".join(marked)))
+    skf = point.get("skf_catalogue_model")
+    if skf and skf.get("verify"):
+        out.append(Warning_("skf_constants_to_verify", "the SKF catalogue model beside kegel uses constants marked "
+                            "verify (kegel.correlations.skf.VERIFY)"))
+    hyd = point.get("hydraulic")
+    if hyd and hyd.get("source") == "cfd":
+        if hyd.get("steady") is False:
+            out.append(Warning_("cfd_not_steady", f"the CFD result {hyd.get('file')} did not reach a steady loss "
+                                "torque"))
+    elif hyd and scene.lubrication.oil_level_m > 0 and scene.fidelity.hydraulic == "correlation":
+        w = liebrecht_warning(scene.bearing.designation,
+                              scene.lubrication.oil_level_m >= scene.bearing.outer_diameter_m)
+        if w:
+            out.append(w)
+    for row in point.get("study") or ():
+        for w in row.get("warnings", ()):
+            if all(w["code"] != o.code for o in out):
+                out.append(Warning_(w["code"], w["message"]))
+    return out
+
+
+@dataclass
+class WarningLog:
+    """Prints each warning code once per run (the first message with that code) and counts the
+    points that carry it; :meth:`summary` gives the counts."""
+
+    stream: TextIO | None = None
+    counts: dict[str, int] = field(default_factory=dict)
+
+    def add(self, index: int, warnings: list[Warning_]) -> None:
+        """Record the warnings of point ``index``; print codes not seen before."""
+        for w in warnings:
+            if w.code not in self.counts:
+                self.counts[w.code] = 0
+                print(f"kegel: warning [{w.code}] (point {index}): {w.message}", file=self.stream or sys.stderr)
+            self.counts[w.code] += 1
+
+    def summary(self) -> dict[str, int]:
+        """Points per warning code."""
+        return dict(self.counts)

@@ -1,0 +1,222 @@
+"""Studies: lubrications x hydraulic-loss methods at every operating point of a scene.
+
+A scene with a ``[study]`` table (see :mod:`kegel.scene`) solves the contact friction once per
+operating point and adds, for each lubrication (oil levels, minimum quantity) and each method
+(Liebrecht, SKF drag, kegel CFD), the hydraulic loss and the total. :func:`study_rows` gives a
+point's rows, :func:`study_csv` the long table (one row per point x lubrication x method) and
+:func:`study_plot` the overlay plot (total torque against the swept quantity, a colour per
+lubrication, a line style per method, the friction alone as the floor; the hydraulic losses alone
+in a second panel, log scale).
+
+CFD losses between computed speeds are interpolated (power law) with a stated error; a speed
+outside the computed ones is not extrapolated: its row is ``missing`` and names the ``kegel cfd
+run`` command that computes it.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import shlex
+from pathlib import Path
+from typing import Any
+
+from .correlations import hydraulic_torques
+from .lubricant import lubricant_state
+from .point_warnings import Warning_, liebrecht_warning
+
+__all__ = ["read_study_cfd", "study_csv", "study_plot", "study_rows", "STUDY_FILES"]
+
+#: The summary files a study adds to a run.
+STUDY_FILES = ("study.csv", "study.png")
+
+_METHOD_LABEL = {"none": "no oil bath", "liebrecht": "Liebrecht", "skf": "SKF drag", "cfd": "CFD"}
+
+
+def read_study_cfd(scene: Any) -> list[tuple[Path, dict[str, Any]]]:
+    """The CFD results a study's ``cfd_results`` holds (empty when it names nothing yet)."""
+    from .coupling import cfd_result_files, read_cfd_results
+
+    st = scene.study
+    if st is None or "cfd" not in st.methods or not cfd_result_files(st.cfd_results):
+        return []
+    return read_cfd_results(st.cfd_results, source=scene.source, key="study.cfd_results")
+
+
+def _case_name(lub: Any) -> str:
+    return "minimum_quantity" if lub.mode == "minimum_quantity" else lub.oil_level_as_written
+
+
+def _cfd_command(scene: Any, point: dict[str, Any], lub: Any) -> str:
+    level = lub.oil_level_as_written
+    out = f"{scene.study.cfd_results}/{scene.bearing.designation}_{point['speed_rpm']:.0f}rpm_{level}"
+    args = ["kegel", "cfd", "run", "--bearing", scene.bearing.designation, "--lubricant", scene.lubricant.name,
+            "--temperature", f"{point['temperature_degC']:g} degC", "--speed", f"{point['speed_rpm']:.0f} rpm",
+            "--oil-level", level, "--output", out]
+    return " ".join(shlex.quote(a) for a in args)
+
+
+def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dict[str, Any]]]) -> list[dict[str, Any]]:
+    """The study rows of one operating point's record (``friction_torque_Nm``, speeds,
+    temperature, ``cage_speed_rpm``): per lubrication and method the hydraulic loss at the shaft
+    and the total, with the method's warnings.
+
+    The minimum-quantity case has no oil bath: one row, method ``none``, hydraulic loss 0.
+    """
+    from .coupling import cfd_loss_at
+
+    st = scene.study
+    g = scene.geometry
+    friction = float(point["friction_torque_Nm"])
+    w = float(point["speed_rad_s"])
+    T = float(point["temperature_K"])
+    state = lubricant_state(scene.lubricant, T, source=scene.source, key="operating.temperature")
+    wc = float(point.get("cage_speed_rpm", 0.0)) * math.pi / 30 or None
+    D = scene.bearing.outer_diameter_m
+    rows: list[dict[str, Any]] = []
+    for lub in st.cases:
+        base = {"lubrication": _case_name(lub), "mode": lub.mode,
+                "oil_level_m": lub.oil_level_m if lub.mode == "oil_bath" else None,
+                "friction_torque_Nm": friction}
+        if lub.mode == "minimum_quantity":
+            rows.append({**base, "method": "none", "status": "no oil bath", "hydraulic_torque_Nm": 0.0,
+                         "total_torque_Nm": friction, "error_rel": None, "note": "", "warnings": []})
+            continue
+        flooded = lub.oil_level_m >= D
+        for m in st.methods:
+            warns: list[Warning_] = []
+            row: dict[str, Any] = {**base, "method": m, "error_rel": None, "note": ""}
+            if m in ("liebrecht", "skf"):
+                h = hydraulic_torques(m, g, state, shaft_speed_rad_s=w, oil_level_m=lub.oil_level_m,
+                                      cage_speed_rad_s=wc if m == "liebrecht" else None)
+                row.update(status="correlation", hydraulic_torque_Nm=h.total_Nm, components=h.as_dict())
+                if m == "liebrecht":
+                    lw = liebrecht_warning(scene.bearing.designation, flooded)
+                    if lw:
+                        warns.append(lw)
+                else:
+                    warns.append(Warning_("skf_constants_to_verify", "the SKF drag moment uses the V_M diagram "
+                                          "digitisation and constants marked verify (kegel.correlations.skf)"))
+            else:
+                c = cfd_loss_at(cfd_runs, bearing=scene.bearing.designation, lubricant=scene.lubricant.name,
+                                speed_rad_s=w, temperature_K=T, oil_level_m=lub.oil_level_m, flooded=flooded)
+                loss = c["loss_torque_at_shaft_Nm"]
+                row.update(status=c["status"], note=c["note"], error_rel=c["error_rel"], files=c["files"],
+                           meshes=c["meshes"], cfd_wall_time_s=c["wall_time_s"],
+                           hydraulic_torque_Nm=None if loss is None else math.copysign(loss, w))
+                if c["status"] == "missing":
+                    row["command"] = _cfd_command(scene, point, lub)
+                    warns.append(Warning_("cfd_missing", f"no CFD loss for {row['lubrication']} at "
+                                          f"{point['speed_rpm']:.0f} rpm (computed: "
+                                          f"{', '.join(f'{s:.0f}' for s in c['computed_speeds_rpm']) or 'none'} rpm); "
+                                          f"compute it with: {row['command']}"))
+                elif c["status"] == "interpolated":
+                    warns.append(Warning_("cfd_interpolated", f"CFD loss for {row['lubrication']} at "
+                                          f"{point['speed_rpm']:.0f} rpm {c['note']}"))
+                if c["steady"] is False:
+                    warns.append(Warning_("cfd_not_steady", f"a CFD result used for {row['lubrication']} did not "
+                                          "reach a steady loss torque"))
+            hyd = row.get("hydraulic_torque_Nm")
+            row["total_torque_Nm"] = None if hyd is None else friction + hyd
+            row["warnings"] = [x.as_dict() for x in warns]
+            rows.append(row)
+    return rows
+
+
+_CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
+                "lubrication", "oil_level_m", "method", "status", "friction_torque_Nm", "hydraulic_torque_Nm",
+                "total_torque_Nm", "error_rel", "converged", "note", "command", "warnings")
+
+
+def study_csv(points: list[dict[str, Any]]) -> str:
+    """The long table: one row per operating point x lubrication x method (empty cells: no value)."""
+    buf = io.StringIO()
+    w = csv.writer(buf)
+    w.writerow(_CSV_COLUMNS)
+    for p in points:
+        for r in p.get("study") or ():
+            merged = {**p, **r, "converged": p.get("converged"),
+                      "warnings": "; ".join(x["code"] for x in r.get("warnings", ()))}
+            w.writerow(["" if merged.get(c) is None else merged.get(c) for c in _CSV_COLUMNS])
+    return buf.getvalue()
+
+
+_LINESTYLE = {"none": "-", "liebrecht": "-", "skf": "--", "cfd": ":"}
+_MARKER = {"none": "s", "liebrecht": "o", "skf": "^", "cfd": "D"}
+
+
+def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -> str:
+    """The study's overlay plot (see the module docstring), written atomically; returns its path.
+
+    ``meta``: ``title``, ``x_key``, ``x_label``, ``x_scale`` (the swept quantity's record key,
+    axis label and scale factor) and ``cases`` (the lubrication names in the scene's order).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from .io import atomic_save
+
+    xk, xs = meta["x_key"], meta["x_scale"]
+    pts = sorted(points, key=lambda p: p[xk])
+    cases = list(meta["cases"])
+    colours = {c: plt.get_cmap("tab10")(i % 10) for i, c in enumerate(cases)}
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
+    x = [p[xk] * xs for p in pts]
+    if "minimum_quantity" not in cases:  # else its line is the friction alone
+        ax.plot(x, [p["friction_torque_Nm"] for p in pts], color="k", lw=2.5, alpha=0.35,
+                label="contact friction (kegel)")
+    keys: list[tuple[str, str]] = []
+    for p in pts:
+        for r in p.get("study") or ():
+            if (r["lubrication"], r["method"]) not in keys:
+                keys.append((r["lubrication"], r["method"]))
+    for case, m in keys:
+        xs_, tot, hyd, err, interp = [], [], [], [], []
+        for p in pts:
+            r = next((r for r in p.get("study") or () if r["lubrication"] == case and r["method"] == m), None)
+            if r is None or r.get("total_torque_Nm") is None:
+                continue
+            xs_.append(p[xk] * xs)
+            tot.append(r["total_torque_Nm"])
+            hyd.append(abs(r["hydraulic_torque_Nm"]))
+            err.append((r.get("error_rel") or 0.0) * abs(r["hydraulic_torque_Nm"]))
+            interp.append(r.get("status") == "interpolated")
+        if not xs_:
+            continue
+        label = f"{case.replace('_', ' ')}: {_METHOD_LABEL[m]}"
+        ax.plot(xs_, tot, ls=_LINESTYLE[m], marker=_MARKER[m], color=colours[case], label=label, ms=5)
+        if m != "none":
+            ax2.errorbar(xs_, [h * 1e3 for h in hyd], yerr=[e * 1e3 for e in err], ls=_LINESTYLE[m],
+                         marker=_MARKER[m], color=colours[case], label=label, ms=5, capsize=3)
+            if any(interp):
+                ax2.plot([a for a, i in zip(xs_, interp) if i], [h * 1e3 for h, i in zip(hyd, interp) if i],
+                         ls="none", marker=_MARKER[m], mfc="white", mec=colours[case], ms=7)
+    ax.set_xlabel(meta["x_label"])
+    ax.set_ylabel("total torque at the shaft [N m]")
+    ax.set_title("friction + hydraulic loss", fontsize=9)
+    ax.legend(fontsize=7)
+    ax2.set_xlabel(meta["x_label"])
+    ax2.set_ylabel("hydraulic loss torque [N mm]")
+    if ax2.lines:
+        from matplotlib.ticker import LogFormatter
+
+        ax2.set_yscale("log")
+        ax2.yaxis.set_major_formatter(LogFormatter(labelOnlyBase=False))
+        ax2.yaxis.set_minor_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
+        ax2.legend(fontsize=7)
+    missing = sorted({f"{r['lubrication'].replace('_', ' ')} {p['speed_rpm']:.0f}" for p in pts
+                      for r in p.get("study") or () if r.get("status") == "missing"})
+    if missing:
+        ax2.text(0.01, 0.01, "CFD not computed (rpm): " + ", ".join(missing[:8]) + (" ..." if len(missing) > 8 else "")
+                 + "\nstudy.csv names the command for each", transform=ax2.transAxes, fontsize=6, va="bottom")
+    ax2.set_title("hydraulic losses alone (hollow: CFD interpolated, bars: its stated error)", fontsize=9)
+    fig.suptitle(meta["title"], fontsize=9)
+    fig.tight_layout()
+    try:
+        atomic_save(path, lambda tmp: fig.savefig(tmp, dpi=110))
+    finally:
+        plt.close(fig)
+    return str(path)
