@@ -238,19 +238,29 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
 
     out = Path(args.output or "results/cfd/sweep")
     rows = []
-    for level in args.oil_level or ["flooded"]:
-        for speed in args.speed or ["2000 rpm"]:
-            point = _point_from_args(args, speed, level)
-            case = out / _case_name(point, level)
-            data = _run_one(point, case, args)
-            rows.append({"oil_level": level, "speed_rpm": point.speed_rad_s * 30 / math.pi,
-                         "cfd_loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
-                         "cfd_inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
-                         "cfd_outer_ring_Nm": data["torques_Nm"]["outer_ring"]["total"],
-                         "liebrecht_total_Nm": data["liebrecht_Nm"]["total_Nm"],
-                         "runtime_s": data["runtime_s"], "cells": data["fidelity"]["cells"],
-                         "start_run": data.get("start_run"), "chain_wall_time_s": data.get("chain_wall_time_s"),
-                         "case": str(case)})
+    # every case of the sweep checked before the first one runs (a bad second speed used to be
+    # found only after the first case's hour of CFD)
+    planned = [(level, _point_from_args(args, speed, level))
+               for level in args.oil_level or ["flooded"] for speed in args.speed or ["2000 rpm"]]
+    for level, point in planned:
+        try:
+            point.validate()
+        except ValueError as exc:
+            from kegel.errors import KegelInputError
+
+            raise KegelInputError("command line", "--speed/--oil-level", f"{level}, "
+                                  f"{point.speed_rad_s * 30 / math.pi:.0f} rpm", str(exc)) from None
+    for level, point in planned:
+        case = out / _case_name(point, level)
+        data = _run_one(point, case, args)
+        rows.append({"oil_level": level, "speed_rpm": point.speed_rad_s * 30 / math.pi,
+                     "cfd_loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
+                     "cfd_inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
+                     "cfd_outer_ring_Nm": data["torques_Nm"]["outer_ring"]["total"],
+                     "liebrecht_total_Nm": data["liebrecht_Nm"]["total_Nm"],
+                     "runtime_s": data["runtime_s"], "cells": data["fidelity"]["cells"],
+                     "start_run": data.get("start_run"), "chain_wall_time_s": data.get("chain_wall_time_s"),
+                     "case": str(case)})
     out.mkdir(parents=True, exist_ok=True)
     atomic_write_json(out / "sweep.json", {"rows": rows})
     header = "oil_level,speed_rpm,cfd_loss_torque_Nm,liebrecht_total_Nm,cfd_inner_ring_Nm,cfd_outer_ring_Nm,runtime_s,cells\n"

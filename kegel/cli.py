@@ -450,7 +450,10 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
 
 def _cmd_check(args: argparse.Namespace) -> int:
+    from .run import preflight
+
     scene = load_scene(args.scene, args.set or ())
+    preflight(scene)  # what kegel run checks before its first point (each point's CFD result)
     summary = _scene_summary(scene)  # evaluates the lubricant at every temperature, too
     if args.format == "json":
         _json_out({"valid": True, "file": str(args.scene), "name": scene.name,

@@ -275,3 +275,27 @@ def test_another_runs_results_are_never_replaced_silently(tmp_path):
     assert res.returncode == 0, res.stderr
     assert f"run id {first}" in res.stderr and "replaced" in res.stderr
     assert json.loads((tmp_path / "out" / "results.json").read_text())["run_id"] != first
+
+
+def test_cfd_sweep_checks_every_case_before_the_first_runs(tmp_path):
+    """Finding 4: `cfd sweep` checked its second speed only after the first case had run (an
+    hour of CFD). Now a bad second speed stops it before any case folder exists."""
+    res = run_kegel("cfd", "sweep", "--speed", "2000 rpm", "--speed", "0 rpm", "--output", str(tmp_path / "sw"),
+                    timeout=60)
+    assert res.returncode == 2 and "'0 rpm'" in res.stderr, res.stderr
+    assert not (tmp_path / "sw").exists()
+
+
+def test_check_finds_a_missing_cfd_result_for_any_point(tmp_path, monkeypatch):
+    """`kegel check` checks each point's CFD result (hydraulic = "cfd") as `kegel run` does
+    before its first point."""
+    monkeypatch.chdir(tmp_path)
+    _fake_cfd(tmp_path / "cfd", 2000.0, 0.06)
+    scene = STUDY.split("[study]")[0].replace('speed = ["500 rpm", "1000 rpm", "2000 rpm", "3000 rpm"]',
+                                              'speed = ["2000 rpm", "3000 rpm"]')
+    scene += '[lubrication]\nmode = "oil_bath"\noil_level = "flooded"\n[model]\nhydraulic = "cfd"\ncfd_results = "cfd"\n'
+    (tmp_path / "s.toml").write_text(scene)
+    res = run_kegel("check", "s.toml", cwd=tmp_path)
+    assert res.returncode == 2 and "3000 rpm" in res.stderr and "model.cfd_results" in res.stderr, res.stderr
+    (tmp_path / "s.toml").write_text(scene.replace('["2000 rpm", "3000 rpm"]', '"2000 rpm"'))
+    assert run_kegel("check", "s.toml", cwd=tmp_path).returncode == 0
