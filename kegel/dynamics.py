@@ -406,10 +406,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     prog = _Progress(t_start, duration_s, progress)
     finished, message, last_ck = True, "", t_start
     integration_s = 0.0
+    pace = _Pace()
     for tk in grid:
         if tk > sim.time_s:
             t_int = time.perf_counter()
-            flag = sim.advance(float(tk))
+            flag = pace.advance(sim, float(tk))
             integration_s += time.perf_counter() - t_int
             if flag != 0:
                 finished, message = False, sim.message
@@ -486,6 +487,36 @@ def _load_checkpoint(path: Path, key: str, shape: tuple) -> dict[str, Any] | Non
               file=sys.stderr)
         return None  # overwritten by this run's first checkpoint
     return saved
+
+
+class _Pace:
+    """Advances the integrator to an output time in pieces of about :attr:`budget_s` of wall time,
+    so that Python answers Ctrl-C within that time (the integrator is C++: a KeyboardInterrupt
+    waits for it to return; one output interval took 2.4 s). CVODE in normal mode steps past each
+    target and interpolates, so the intermediate targets do not change its internal steps: the
+    answer is the same as with one call per output (checked in tests/python/test_dynamics.py)."""
+
+    budget_s = 0.2
+
+    def __init__(self) -> None:
+        self.rate = 0.0  # wall seconds per simulated second, from the last piece
+
+    def advance(self, sim: Any, t_end: float) -> int:
+        while sim.time_s < t_end:
+            t0, w0 = sim.time_s, time.perf_counter()
+            # the first piece: a sixteenth of the interval (the same whatever the budget, so the
+            # integrator's first step, which CVODE estimates from it, does not depend on the budget)
+            target = t_end if self.rate > 0.0 else t0 + (t_end - t0) / 16.0
+            if self.rate > 0.0:
+                target = min(t_end, t0 + self.budget_s / self.rate)
+                if t_end - target < 1e-3 * (t_end - t0):
+                    target = t_end  # no sliver of a piece before an output
+            flag = sim.advance(float(target))
+            if flag != 0:
+                return flag
+            if sim.time_s > t0:
+                self.rate = (time.perf_counter() - w0) / (sim.time_s - t0)
+        return 0
 
 
 def _save_checkpoint(path: Path, t: float, y: np.ndarray, times: list, states: list, quads: list,
