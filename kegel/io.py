@@ -13,7 +13,7 @@ from typing import Any
 
 from . import _core
 
-__all__ = ["atomic_write_text", "atomic_write_json", "atomic_save", "file_mode", "provenance", "RunFolder",
+__all__ = ["atomic_write_text", "atomic_write_json", "atomic_write_json_records", "atomic_save", "file_mode", "provenance", "RunFolder",
            "OutputLocked", "temp_beside"]
 
 
@@ -77,6 +77,36 @@ def atomic_write_text(path: str | Path, text: str) -> Path:
 def atomic_write_json(path: str | Path, data: Any) -> Path:
     """Atomically write ``data`` as indented JSON (NaN is refused: results must be finite)."""
     return atomic_write_text(path, json.dumps(data, indent=2, allow_nan=False) + "\n")
+
+
+def atomic_write_json_records(path: str | Path, header: dict[str, Any], key: str, records: Any) -> Path:
+    """Atomically write ``header`` as a JSON object whose ``key`` holds the list ``records``,
+    one record at a time: a 10^5-point sweep never builds its whole results text in memory
+    (``json.dumps`` of it made a string of about 1 GB). Readers see the same JSON as
+    :func:`atomic_write_json` would write (indented, NaN refused)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = temp_beside(path, ".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            sentinel = f"@@kegel-records-{os.urandom(6).hex()}@@"
+            head = json.dumps({**header, key: sentinel}, indent=2, allow_nan=False)
+            marker = f'"{key}": "{sentinel}"'
+            cut = head.index(marker)
+            fh.write(head[:cut] + f'"{key}": [')
+            first = True
+            for rec in records:
+                text = json.dumps(rec, indent=2, allow_nan=False).replace("\n", "\n    ")
+                fh.write(("\n    " if first else ",\n    ") + text)
+                first = False
+            fh.write(("\n  ]" if not first else "]") + head[cut + len(marker):] + "\n")
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
 
 
 def provenance() -> dict[str, str]:

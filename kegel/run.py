@@ -27,7 +27,7 @@ import numpy as np
 
 from .correlations import hydraulic_torques
 from .dynamics import CONTACTS, MECHANISMS
-from .io import atomic_write_json, atomic_write_text, provenance
+from .io import atomic_write_json, atomic_write_json_records, atomic_write_text, provenance
 from .lubricant import lubricant_state
 from .errors import KegelSolverError
 from .dynamics import SimulationDiverged
@@ -271,7 +271,7 @@ def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]],
     fid = scene.fidelity
     rib_cells = _rib_cells(fid)
     files = {
-        "json": str(atomic_write_json(out / "results.json", {
+        "json": str(atomic_write_json_records(out / "results.json", {
             "scene": {"name": scene.name, "title": scene.title, "description": scene.description,
                       "description_note": ("as written in the scene file; --set changed "
                                            + ", ".join(scene.overridden)) if scene.overridden else None,
@@ -293,8 +293,8 @@ def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]],
             "warnings": {"points_per_code": warnings or {},
                          "note": "each point's warnings are in its record and in results.csv; codes: "
                                  "kegel.point_warnings"},
-            "points": points,
-        })),
+            "points": None,
+        }, "points", iter(points))),
         "csv": str(atomic_write_text(out / "results.csv", _csv(points))),
     }
     solved = [p for p in points if p.get("solved", True)]  # points whose solver raised have no figures

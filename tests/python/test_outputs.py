@@ -299,3 +299,21 @@ def test_check_finds_a_missing_cfd_result_for_any_point(tmp_path, monkeypatch):
     assert res.returncode == 2 and "3000 rpm" in res.stderr and "model.cfd_results" in res.stderr, res.stderr
     (tmp_path / "s.toml").write_text(scene.replace('["2000 rpm", "3000 rpm"]', '"2000 rpm"'))
     assert run_kegel("check", "s.toml", cwd=tmp_path).returncode == 0
+
+
+def test_results_json_is_written_record_by_record_with_the_same_text(tmp_path):
+    """Bounded memory (issue 21): results.json is written one point at a time, never as one
+    string of the whole sweep; the file is the same as the one-piece writer's, text for text."""
+    from kegel.io import atomic_write_json, atomic_write_json_records
+
+    header = {"scene": {"resolved": {"operating": {"speed": {"from": "1 rpm", "points": 8}}}}, "points": None,
+              "after": [1, 2]}
+    recs = [{"index": i, "x": [0.5, {"y": "a\nb"}], "points": []} for i in range(4)]
+    atomic_write_json_records(tmp_path / "a.json", header, "points", iter(recs))
+    atomic_write_json(tmp_path / "b.json", {**header, "points": recs})
+    assert (tmp_path / "a.json").read_text() == (tmp_path / "b.json").read_text()
+    atomic_write_json_records(tmp_path / "e.json", {"points": None}, "points", iter(()))
+    assert json.loads((tmp_path / "e.json").read_text()) == {"points": []}
+    with pytest.raises(ValueError):
+        atomic_write_json_records(tmp_path / "n.json", {"points": None}, "points", iter([{"v": float("nan")}]))
+    assert not (tmp_path / "n.json").exists() and not list(tmp_path.glob(".n*"))
