@@ -665,6 +665,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KegelSolverError as exc:
         print(f"kegel: solver failed: {exc}", file=sys.stderr)
         return 1
+    except OSError as exc:
+        if isinstance(exc, BrokenPipeError):
+            raise
+        # a full disk, a vanished or read-only output folder: one line naming the file
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"kegel: error: cannot write {where}{exc.strerror or exc}", file=sys.stderr)
+        return 1
     except RuntimeError as exc:
         from .cfd_cases.foam import FoamError, FoamInterrupted
 

@@ -204,9 +204,14 @@ class RunFolder:
         return done
 
     def _write_line(self, obj: dict[str, Any]) -> None:
-        self._stream.write(json.dumps(obj, allow_nan=False) + "\n")
-        self._stream.flush()
-        os.fsync(self._stream.fileno())
+        try:
+            self._stream.write(json.dumps(obj, allow_nan=False) + "\n")
+            self._stream.flush()
+            os.fsync(self._stream.fileno())
+        except OSError as exc:
+            if exc.filename is None:
+                exc.filename = str(self.path / self.STREAM)
+            raise
 
     def add(self, point: dict[str, Any]) -> None:
         """Stream one finished point."""
@@ -220,9 +225,14 @@ class RunFolder:
         (self.path / self.STREAM).unlink(missing_ok=True)
 
     def close(self) -> None:
+        """Release the folder: close the stream (a full disk may refuse its last buffered line:
+        that line is dropped, as a line cut by an interrupt is on resume) and remove the lock."""
         if self._stream is not None:
-            self._stream.close()
-            self._stream = None
+            stream, self._stream = self._stream, None
+            try:
+                stream.close()
+            except OSError:
+                pass
         if self._lock_fd is not None:
             os.close(self._lock_fd)
             self._lock_fd = None

@@ -144,8 +144,16 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         runtime = time.perf_counter() - t_start
         if folder is None:
             return RunResult(points=points, files={}, runtime_s=runtime)
-        files = _write_summary(scene, friction, choice, points, runtime, out, warn_log.summary(),
-                               folder.run_id)
+        try:
+            files = _write_summary(scene, friction, choice, points, runtime, out, warn_log.summary(),
+                                   folder.run_id)
+        except OSError as exc:
+            if exc.filename is None:
+                exc.filename = str(out)
+            print(f"kegel: the summary files could not be written ({exc.strerror or exc}); the finished points are "
+                  f"kept in {out / folder.STREAM}: rerun the same command to write them without solving again",
+                  file=sys.stderr)
+            raise
         folder.finish()
         return RunResult(points=points, files=files, runtime_s=runtime)
     finally:

@@ -99,3 +99,46 @@ def test_an_unwritable_output_is_found_before_computing(tmp_path):
     res = run_kegel("run", SCENE, "--output", str(f))
     assert res.returncode == 2 and str(f) in res.stderr and "Traceback" not in res.stderr
     assert time.monotonic() - t0 < 30
+
+
+def _mount_tmpfs(path: Path, size: str) -> bool:
+    path.mkdir(parents=True, exist_ok=True)
+    try:
+        return subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(path)],
+                              capture_output=True, timeout=10).returncode == 0
+    except (OSError, subprocess.SubprocessError):
+        return False
+
+
+@pytest.mark.parametrize("size", ["40k", "100k"])
+def test_a_full_disk_gives_one_line_and_the_run_resumes(tmp_path, size):
+    """Fault injection: the output folder on a tiny tmpfs fills up while the points stream (40k)
+    or while the summary files are written (100k). kegel exits 1 with one line naming the file,
+    no traceback, no temporary file or lock left; once there is space the same command resumes
+    from the streamed points."""
+    disk = tmp_path / "disk"
+    if os.geteuid() != 0 or not _mount_tmpfs(disk, size):
+        pytest.skip("needs root to mount a small tmpfs")
+    try:
+        args = ("run", SCENE, "--set", 'model.fidelity="fast"', "--output", str(disk / "out"))
+        res = run_kegel(*args)
+        assert res.returncode == 1, res.stderr
+        assert "Traceback" not in res.stderr
+        assert "No space left on device" in res.stderr and str(disk / "out") in res.stderr
+        left = sorted(p.name for p in (disk / "out").iterdir())
+        assert left == ["points.jsonl"], left
+        kept = 0  # whole lines only: the disk cut the last one
+        for line in (disk / "out" / "points.jsonl").read_text().splitlines()[1:]:
+            try:
+                json.loads(line)
+                kept += 1
+            except json.JSONDecodeError:
+                pass
+        subprocess.run(["mount", "-o", "remount,size=4m", str(disk)], check=True, timeout=10)
+        res = run_kegel(*args)
+        assert res.returncode == 0, res.stderr
+        if kept:
+            assert f"resuming the run in {disk / 'out'}: {kept} of 15" in res.stderr
+        assert len(json.loads((disk / "out" / "results.json").read_text())["points"]) == 15
+    finally:
+        subprocess.run(["umount", str(disk)], capture_output=True, timeout=10)
