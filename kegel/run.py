@@ -181,7 +181,8 @@ def preflight(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
 def _failed_record(op, exc: Exception) -> dict[str, Any]:
     """The record of a point whose solver raised: the operating point, ``converged`` false, the
     message as ``failure``, no figures (None, empty in the CSV)."""
-    msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+    msg = str(exc).strip() or type(exc).__name__  # whole: a divergence report shows the state that explains it
+    print(f"kegel: point {op.index} failed: {msg.splitlines()[0]}", file=sys.stderr)
     return {**op.as_dict(), "friction_torque_Nm": None, "hydraulic_torque_Nm": None, "total_torque_Nm": None,
             "converged": False, "failure": f"{type(exc).__name__}: {msg}", "solved": False,
             "torque_by_contact_Nm": {}, "torque_by_mechanism_Nm": {}}
