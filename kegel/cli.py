@@ -45,7 +45,7 @@ __all__ = ["main"]
 def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=sys.stdout) -> None:
     def fmt(v: Any) -> str:
         if isinstance(v, float):
-            return f"{v:.4g}"  # engineers read 3-4 figures; every digit is in --format json
+            return f"{v:.6g}"  # six figures in tables; every digit is in --format json
         return "" if v is None else str(v)
 
     cells = [[fmt(v) for v in row] for row in rows]
@@ -449,6 +449,37 @@ def _cmd_validate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_list(args: argparse.Namespace) -> int:
+    from .inventory import KINDS, inventory
+
+    kinds = [args.kind] if args.kind else list(KINDS)
+    data = {k: inventory(k) for k in kinds}
+    if args.format == "json":
+        _json_out(data)
+        return 0
+    for k in kinds:
+        print(f"{k}: {KINDS[k]}")
+        rows = data[k]
+        if not rows:
+            print("  (none)")
+        for r in rows:
+            text = r.get("title", "")
+            text = f"{text}: {r['description']}" if text and r.get("description") else (text or r.get("description", ""))
+            print(f"  {r['name']:<34} {text}".rstrip())
+    return 0
+
+
+def _cmd_init(args: argparse.Namespace) -> int:
+    from .inventory import write_scene_template
+
+    path = write_scene_template(args.file, bearing=args.bearing, lubricant=args.lubricant, force=args.force)
+    if args.format == "json":
+        _json_out({"file": str(path)})
+        return 0
+    print(f"wrote {path}: check it with `kegel check {path}`, run it with `kegel run {path}`")
+    return 0
+
+
 def _cmd_check(args: argparse.Namespace) -> int:
     from .run import preflight
 
@@ -476,7 +507,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
     if args.format == "json":
         _json_out({"scene": scene.name, "files": result.files, "runtime_s": result.runtime_s,
                    "points": result.points})
-        return 0
+        return _run_status(result.points)
     g = scene.geometry
     f = scene.fidelity
     print(f"Scene '{scene.title}' ({scene.source})")
@@ -528,7 +559,20 @@ def _cmd_run(args: argparse.Namespace) -> int:
                   f"{d['revolutions']:.2f} rev in {p['runtime_s']:.1f} s; series, VTK, plot: "
                   f"{Path(d['files']['json']).parent}")
     print(f"runtime: {result.runtime_s:.2f} s for {len(result.points)} operating point(s)")
-    return 0
+    return _run_status(result.points)
+
+
+def _run_status(points: Sequence[dict[str, Any]]) -> int:
+    """Exit status of a finished run: 1 (with one line on stderr) when the solver raised at any
+    point (the results of every other point are written), 0 otherwise."""
+    unsolved = [p for p in points if not p.get("solved", True)]
+    if not unsolved:
+        return 0
+    first = unsolved[0]
+    reason = (first.get("failure") or "").splitlines()[0] if first.get("failure") else "no answer"
+    print(f"kegel: solver failed at {len(unsolved)} of {len(points)} point(s) (point {first['index']}: {reason}); "
+          "the other points' results are written", file=sys.stderr)
+    return 1
 
 
 def _print_study(points: list[dict[str, Any]]) -> None:
@@ -578,6 +622,22 @@ def _parser() -> argparse.ArgumentParser:
     def common(sp: argparse.ArgumentParser) -> None:
         sp.add_argument("--format", choices=("table", "json"), default="table",
                         help="table for people, json for programs (default: table)")
+
+    from .inventory import KINDS
+
+    li = sub.add_parser("list", help="what kegel ships with: bearings, lubricants, materials, friction sets, "
+                                     "validation data, example scenes")
+    li.add_argument("kind", nargs="?", choices=tuple(KINDS), help="one kind only (default: all)")
+    common(li)
+    li.set_defaults(func=_cmd_list)
+
+    it = sub.add_parser("init", help="write a commented scene file to start from")
+    it.add_argument("file", help="the scene .toml file to write")
+    it.add_argument("--bearing", default="32216", help="bearing designation or .toml file (default 32216)")
+    it.add_argument("--lubricant", default="FVA3", help="lubricant name or .toml file (default FVA3)")
+    it.add_argument("--force", action="store_true", help="replace an existing file")
+    common(it)
+    it.set_defaults(func=_cmd_init)
 
     b = sub.add_parser("bearing", help="derived internal geometry of a bearing")
     b.add_argument("designation", help="bearing designation (e.g. 32216) or a bearing .toml file")
@@ -665,9 +725,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KegelSolverError as exc:
         print(f"kegel: solver failed: {exc}", file=sys.stderr)
         return 1
+    except BrokenPipeError:
+        # `kegel ... | head`: the reader has gone; no traceback, and none at exit either
+        import os
+
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 141
     except OSError as exc:
-        if isinstance(exc, BrokenPipeError):
-            raise
         # a full disk, a vanished or read-only output folder: one line naming the file
         where = f"{exc.filename}: " if exc.filename else ""
         print(f"kegel: error: cannot write {where}{exc.strerror or exc}", file=sys.stderr)

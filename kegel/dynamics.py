@@ -159,6 +159,28 @@ class DynamicResult:
         w = self.series["inner_speed_rad_s"]
         return float(np.trapezoid(np.abs(w), self.time_s) / (2 * math.pi)) if len(w) > 1 else 0.0
 
+    def __repr__(self) -> str:
+        """One line: simulated time, outputs, steady-state means, finished (never the arrays,
+        which ``time_s``, ``series`` and ``states`` hold)."""
+        t = np.asarray(self.time_s, dtype=float)
+        parts = [f"{(t[-1] - t[0]) * 1e3:.4g} ms simulated" if t.size > 1 else "no time simulated",
+                 f"{t.size} outputs"]
+        st = self.steady or {}
+        if "inner_speed_rad_s" in st:
+            parts.append(f"mean speed {st['inner_speed_rad_s'] * 30.0 / math.pi:.4g} rpm")
+        if "drive_torque_Nm" in st:
+            torque = f"mean drive torque {st['drive_torque_Nm']:.4g} N m"
+            if "outer_ring_torque_Nm" in st:
+                torque += f" (outer ring {st['outer_ring_torque_Nm']:.4g} N m)"
+            parts.append(torque)
+        if self.finished:
+            parts.append("finished")
+        else:
+            msg = " ".join(str(self.message).split())
+            parts.append("not finished" + (f": {msg[:120]}{'...' if len(msg) > 120 else ''}" if msg else ""))
+        parts.append(f"runtime {self.runtime_s:.3g} s")
+        return f"DynamicResult({', '.join(parts)})"
+
 
 _SCALARS = ("inner_speed_rad_s", "cage_speed_rad_s", "drive_torque_Nm", "outer_ring_torque_Nm", "damping_power_W",
             "cage_power_W", "external_power_W", "power_input_W", "kinetic_energy_J", "max_penetration_m",
@@ -497,6 +519,7 @@ class _Pace:
     answer is the same as with one call per output (checked in tests/python/test_dynamics.py)."""
 
     budget_s = 0.2
+    FIRST_PIECE_S = 1e-4
 
     def __init__(self) -> None:
         self.rate = 0.0  # wall seconds per simulated second, from the last piece
@@ -504,9 +527,11 @@ class _Pace:
     def advance(self, sim: Any, t_end: float) -> int:
         while sim.time_s < t_end:
             t0, w0 = sim.time_s, time.perf_counter()
-            # the first piece: a sixteenth of the interval (the same whatever the budget, so the
-            # integrator's first step, which CVODE estimates from it, does not depend on the budget)
-            target = t_end if self.rate > 0.0 else t0 + (t_end - t0) / 16.0
+            # the first piece: a sixteenth of the interval, at most FIRST_PIECE_S of simulated time
+            # (the same whatever the budget, so the integrator's first step, which CVODE estimates
+            # from it, does not depend on the budget; short, so a long interval still answers
+            # Ctrl-C before the rate is known)
+            target = t_end if self.rate > 0.0 else t0 + min((t_end - t0) / 16.0, self.FIRST_PIECE_S)
             if self.rate > 0.0:
                 target = min(t_end, t0 + self.budget_s / self.rate)
                 if t_end - target < 1e-3 * (t_end - t0):

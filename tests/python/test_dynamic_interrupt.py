@@ -55,25 +55,56 @@ mode = "minimum_quantity"
 fidelity = "fast"
 solution = "dynamic"
 [dynamic]
-duration = "40 ms"
-output_interval = "20 ms"
-checkpoint_interval = "20 ms"
+duration = "2 s"
+output_interval = "1 s"
+checkpoint_interval = "1 s"
 """
 
 
+def test_ctrl_c_during_the_integration_is_answered_within_a_second(monkeypatch):
+    """A Ctrl-C one second into the integration of a long output interval (one interval lasts
+    minutes of wall time) ends it within a second, whatever the machine's load: the interrupt is
+    sent once the integrator runs, and the delay is measured from it."""
+    import _thread
+    import threading
+
+    sent: list[float] = []
+    real = dyn._Pace.advance
+
+    def advance(self, sim, t_end):
+        if not sent:
+            sent.append(0.0)
+
+            def fire():
+                sent[0] = time.monotonic()
+                _thread.interrupt_main(signal.SIGINT)
+
+            threading.Timer(1.0, fire).start()
+        return real(self, sim, t_end)
+
+    monkeypatch.setattr(dyn._Pace, "advance", advance)
+    b = kegel.load_bearing("32216")
+    m = kegel.load_material("bearing_steel")
+    lub = kegel.load_lubricant("FVA3")
+    g = kegel.derive_geometry(b, m)
+    with pytest.raises(KeyboardInterrupt):
+        simulate(g, b, m, lub, load_friction("steel_mineral_oil"), temperature_K=323.15,
+                 speed_profile=[(0, 2000 * RPM)], duration_s=2.0, axial_N=6000.0, slices=8, output_interval_s=1.0)
+    late = time.monotonic() - sent[0]
+    assert sent[0] > 0 and late < 1.0, f"Ctrl-C answered after {late:.2f} s"
+
+
 @pytest.mark.slow
-def test_ctrl_c_is_answered_within_a_second(tmp_path):
-    """One output interval here lasts several seconds of wall time; Ctrl-C two seconds in must
-    end the run (exit 130) within a second."""
+def test_ctrl_c_ends_a_dynamic_run_with_status_130(tmp_path):
+    """`kegel run` of a dynamic scene, interrupted: exit 130, one line, no traceback (and the
+    checkpoint or the streamed points kept for a resume)."""
     (tmp_path / "s.toml").write_text(SCENE)
     exe = Path(sys.executable).with_name("kegel")
     proc = subprocess.Popen([str(exe), "run", "s.toml", "--output", "out"], cwd=tmp_path,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(3.0)
-    assert proc.poll() is None, proc.communicate()
-    t0 = time.monotonic()
+    assert proc.poll() is None, proc.communicate()  # 2 s of simulated time take minutes
     proc.send_signal(signal.SIGINT)
-    _, err = proc.communicate(timeout=30)
-    late = time.monotonic() - t0
+    _, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err
-    assert late < 1.0, f"Ctrl-C answered after {late:.2f} s"
+    assert "Traceback" not in err and "interrupted" in err

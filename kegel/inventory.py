@@ -1,0 +1,145 @@
+"""What kegel ships with (``kegel list``) and a commented scene to start from (``kegel init``).
+
+The data shipped with kegel lives in ``kegel/data/<kind>/*.toml``, one file per bearing,
+lubricant, material and friction parameter set, each with its sources; the example scenes live in
+``examples/`` of a source tree.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from .data import DATA_DIR, load_bearing, load_lubricant, load_material
+from .errors import KegelInputError
+from .io import atomic_write_text
+from ._toml import read_toml
+
+__all__ = ["KINDS", "inventory", "scene_template", "write_scene_template"]
+
+#: The kinds ``kegel list`` knows, with a one-line description.
+KINDS = {
+    "bearings": "tapered roller bearings (kegel/data/bearings)",
+    "lubricants": "oils (kegel/data/lubricants)",
+    "materials": "solid materials (kegel/data/materials)",
+    "friction": "friction-law parameter sets (kegel/data/friction)",
+    "validation": "measured-data sets of the validation (kegel/data/validation)",
+    "examples": "example scenes (examples/ of a source tree)",
+}
+
+EXAMPLES_DIR = Path(__file__).resolve().parents[1] / "examples"
+
+
+def _first_comment(path: Path) -> str:
+    """The first comment line of a TOML file, without '#'."""
+    for line in path.read_text().splitlines():
+        s = line.strip()
+        if s.startswith("#") and s.lstrip("#").strip():
+            return s.lstrip("#").strip()
+    return ""
+
+
+def inventory(kind: str) -> list[dict[str, Any]]:
+    """The entries of one kind of shipped data, each a dict with ``name``, ``file`` and a short
+    description (bearings also with their boundary dimensions, C0r and roller count).
+
+    Raises
+    ------
+    KegelInputError
+        If ``kind`` is not one of :data:`KINDS`.
+    """
+    if kind not in KINDS:
+        raise KegelInputError("command line", "kind", kind, "one of " + ", ".join(KINDS))
+    if kind == "examples":
+        files = sorted(EXAMPLES_DIR.glob("*.toml")) if EXAMPLES_DIR.is_dir() else []
+        rows = []
+        for f in files:
+            scene = read_toml(f).get("scene", {})
+            rows.append({"name": f.stem, "file": str(f), "title": scene.get("name", f.stem),
+                         "description": scene.get("description", "")})
+        return rows
+    rows = []
+    for f in sorted((DATA_DIR / kind).glob("*.toml")):
+        row: dict[str, Any] = {"name": f.stem, "file": str(f)}
+        if kind == "bearings":
+            b = load_bearing(f.stem, source="command line", key="bearing")
+            row.update(bore_mm=1e3 * b.bore_diameter_m, outside_mm=1e3 * b.outer_diameter_m,
+                       width_mm=1e3 * b.total_width_m, C0r_kN=b.C0r_N / 1e3, rollers=b.roller_count,
+                       description=f"d {1e3 * b.bore_diameter_m:g} x D {1e3 * b.outer_diameter_m:g} x "
+                                   f"T {1e3 * b.total_width_m:g} mm, Z = {b.roller_count}, C0r = {b.C0r_N / 1e3:g} kN")
+        elif kind == "lubricants":
+            row["description"] = load_lubricant(f.stem, source="command line", key="lubricant").description
+        elif kind == "materials":
+            m = load_material(f.stem, source="command line", key="material")
+            row["description"] = (f"E = {m.youngs_modulus_Pa / 1e9:g} GPa, nu = {m.poisson_ratio:g}, "
+                                  f"rho = {m.density_kg_m3:g} kg/m3")
+        else:
+            row["description"] = _first_comment(f)
+        rows.append(row)
+    return rows
+
+
+def scene_template(bearing: str = "32216", lubricant: str = "FVA3", name: str = "my scene") -> str:
+    """A commented scene file that ``kegel check`` accepts: one bearing under an axial load, a speed
+    sweep at one temperature in an oil bath, with every optional section shown commented out."""
+    load_bearing(bearing, source="command line", key="--bearing")  # a clear error before writing
+    load_lubricant(lubricant, source="command line", key="--lubricant")
+    return f'''# A kegel scene: one bearing, one oil, the operating points and the model fidelity.
+# Check it with `kegel check FILE`, run it with `kegel run FILE`; every key is described in
+# docs/scenes.md. Quantities are strings with their unit ("6 kN", "2000 rpm", "50 degC").
+
+[scene]
+name = "{name}"
+description = "Fa = 6 kN, 500-4000 rpm, 50 degC, oil bath at half roller height"
+
+[bearing]
+designation = "{bearing}"        # `kegel list bearings`, or a path to a bearing .toml file
+# material = "bearing_steel"
+
+[lubricant]
+name = "{lubricant}"             # `kegel list lubricants`, or a path to a lubricant .toml file
+
+[operating]
+axial_load = "6 kN"              # or axial_offset = "20 um" (displacement-controlled preload)
+radial_load = "0 kN"             # Fa / Fr must exceed tan(contact angle), else the ring lifts off
+speed = {{ from = "500 rpm", to = "4000 rpm", points = 8 }}   # or one speed, or a list
+temperature = "50 degC"          # bulk oil temperature; a list sweeps it
+# tilt_moment = "20 N m"
+
+[lubrication]
+mode = "oil_bath"                # or "minimum_quantity" (no hydraulic loss)
+oil_level = "half_roller"        # none, half_roller, shaft_center, flooded or a length
+
+[model]
+fidelity = "default"             # fast, default, fine or auto (with tolerance = "1 %")
+# hydraulic = "correlation"      # none, correlation (Liebrecht) or cfd (with cfd_results = "...")
+# solution = "dynamic"           # then a [dynamic] table: duration, output_interval, ...
+
+# Compare lubrications and hydraulic methods in one run (instead of [lubrication]'s level):
+# [study]
+# lubrication = ["flooded", "shaft_center", "minimum_quantity"]
+# hydraulic = ["liebrecht", "skf"]
+
+# [output]
+# directory = "results/my_scene"
+'''
+
+
+def write_scene_template(path: str | Path, *, bearing: str = "32216", lubricant: str = "FVA3",
+                         force: bool = False) -> Path:
+    """Write :func:`scene_template` to ``path`` (atomically); refuses to replace an existing file
+    unless ``force``.
+
+    Raises
+    ------
+    KegelInputError
+        If the file exists and ``force`` is false, or the bearing or lubricant is unknown.
+    """
+    p = Path(path)
+    if p.exists() and not force:
+        raise KegelInputError("command line", "file", str(p), "a file that does not exist yet (--force replaces it)")
+    if p.suffix != ".toml":
+        raise KegelInputError("command line", "file", str(p), "a .toml file name")
+    text = scene_template(bearing, lubricant, name=p.stem.replace("_", " "))
+    atomic_write_text(p, text)
+    return p

@@ -1,0 +1,71 @@
+"""The command line as a new user meets it: `kegel list`, `kegel init`, `--help` of every command,
+a closed pipe, and the exit status of a run with a point that could not be solved."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from conftest import run_kegel
+
+KEGEL = str(Path(sys.executable).with_name("kegel"))
+COMMANDS = ("list", "init", "bearing", "lubricant", "tribology", "losses", "cfd", "validate", "check", "run")
+
+
+def test_list_names_what_kegel_ships_with():
+    res = run_kegel("list")
+    assert res.returncode == 0, res.stderr
+    for kind in ("bearings:", "lubricants:", "materials:", "friction:", "validation:", "examples:"):
+        assert kind in res.stdout
+    assert "32208" in res.stdout and "32216" in res.stdout and "C0r = 94 kN" in res.stdout
+    assert "FVA3" in res.stdout and "32216_table1" in res.stdout
+    data = json.loads(run_kegel("list", "bearings", "--format", "json").stdout)
+    assert [b["name"] for b in data["bearings"]] == ["32208", "32216"]
+    assert data["bearings"][0]["bore_mm"] == pytest.approx(40.0)
+
+
+def test_list_rejects_an_unknown_kind():
+    res = run_kegel("list", "gears")
+    assert res.returncode == 2 and "invalid choice" in res.stderr and "Traceback" not in res.stderr
+
+
+def test_init_writes_a_scene_that_check_accepts(tmp_path):
+    f = tmp_path / "my_scene.toml"
+    res = run_kegel("init", str(f), "--bearing", "32208")
+    assert res.returncode == 0, res.stderr
+    text = f.read_text()
+    assert 'designation = "32208"' in text and "# [study]" in text
+    chk = run_kegel("check", str(f), "--format", "json")
+    assert chk.returncode == 0, chk.stderr
+    assert json.loads(chk.stdout)["operating_point_count"] == 8
+    again = run_kegel("init", str(f))  # never replaces a file silently
+    assert again.returncode == 2 and "--force" in again.stderr and str(f) in again.stderr
+    assert run_kegel("init", str(f), "--force", "--bearing", "32216").returncode == 0
+    assert 'designation = "32216"' in f.read_text()
+
+
+def test_init_names_an_unknown_bearing_and_writes_nothing(tmp_path):
+    f = tmp_path / "s.toml"
+    res = run_kegel("init", str(f), "--bearing", "6205")
+    assert res.returncode == 2 and "--bearing" in res.stderr and "6205" in res.stderr
+    assert not f.exists()
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_every_command_has_help(command):
+    res = run_kegel(command, "--help")
+    assert res.returncode == 0 and "usage: kegel" in res.stdout, res.stderr
+    if command != "cfd":  # cfd's subcommands take --format
+        assert "--format" in res.stdout
+
+
+def test_a_closed_pipe_ends_quietly():
+    """`kegel list | head -1`: no BrokenPipeError traceback on stderr."""
+    p = subprocess.Popen(f"'{KEGEL}' list | head -1", shell=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+    out, err = p.communicate(timeout=120)
+    assert out.strip() and "Traceback" not in err and "BrokenPipe" not in err, err
