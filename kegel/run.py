@@ -17,7 +17,6 @@ import io
 import math
 import os
 import sys
-import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -586,109 +585,13 @@ def _csv(points: list[dict[str, Any]]) -> str:
     return buf.getvalue()
 
 
-def _save(fig, path: Path) -> str:
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix, dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=110)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)  # never leave a hidden temporary plot behind
-        raise
-    return str(path)
-
-
 #: The summary files of a run (written at its end, all together).
 SUMMARY_FILES = ("results.json", "results.csv", "torque.png", "breakdown.png", "roller_loads_and_slip.png",
                  *STUDY_FILES)
 
 
 def _plots(scene: Scene, points: list[dict[str, Any]], out: Path) -> dict[str, str]:
-    import matplotlib
+    """torque.png, breakdown.png and roller_loads_and_slip.png (see :mod:`kegel.plots`)."""
+    from .plots import plot_meta_from_scene, run_plots
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    files: dict[str, str] = {}
-    sweep = next((s for s in scene.swept if s != "temperature"), None) or (scene.swept[0] if scene.swept else None)
-    xkey, xlabel, xscale = {
-        "speed": ("speed_rpm", "shaft speed [rpm]", 1.0),
-        "radial_load": ("radial_load_N", "radial load [kN]", 1e-3),
-        "axial_load": ("axial_load_N", "axial load [kN]", 1e-3),
-        "axial_offset": ("axial_offset_m", "axial offset [um]", 1e6),
-        "temperature": ("temperature_degC", "temperature [degC]", 1.0),
-        None: ("index", "operating point", 1.0),
-    }[sweep]
-    groups: dict[float, list[dict[str, Any]]] = {}
-    for p in points:
-        key = p["temperature_degC"] if sweep != "temperature" else 0.0
-        groups.setdefault(round(key, 6), []).append(p)
-    title = f"{scene.name} ({scene.bearing.designation}, {scene.lubricant.name})"
-
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for T, ps in groups.items():
-        x = [p[xkey] * xscale for p in ps]
-        lbl = f"{T:g} degC" if sweep != "temperature" else ""
-        ax.plot(x, [p["total_torque_Nm"] for p in ps], marker="o", label=f"total {lbl}")
-        ax.plot(x, [p["friction_torque_Nm"] for p in ps], ls="--", label=f"friction {lbl}")
-        if any(p["hydraulic_torque_Nm"] for p in ps):
-            ax.plot(x, [p["hydraulic_torque_Nm"] for p in ps], ls=":", label=f"hydraulic {lbl}")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("torque [N m]")
-    ax.set_title(title, fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    files["torque_plot"] = _save(fig, out / "torque.png")
-    plt.close(fig)
-
-    # breakdown by contact x mechanism, stacked, for the first group
-    ps = next(iter(groups.values()))
-    x = np.array([p[xkey] * xscale for p in ps])
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    bottom = np.zeros(len(ps))
-    for c in CONTACTS:
-        for k in MECHANISMS:
-            vals = np.array([p["power_W"][c][k] / p["speed_rad_s"] for p in ps])
-            if np.max(np.abs(vals)) <= 1e-6 * max(1e-12, max(p["friction_torque_Nm"] for p in ps)):
-                continue
-            ax.bar(x, vals, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
-                   label=f"{c.replace('_', ' ')}: {k.replace('_', ' ')}")
-            bottom += vals
-    cage = np.array([p["torque_by_contact_Nm"]["cage"] for p in ps])
-    if cage.any():
-        ax.bar(x, cage, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
-               label="cage pockets: solid sliding (Eq. 37)")
-        bottom += cage
-    hyd = np.array([p["hydraulic_torque_Nm"] for p in ps])
-    if hyd.any():
-        ax.bar(x, hyd, bottom=bottom, width=0.6 * (np.ptp(x) / max(len(x) - 1, 1) if len(x) > 1 else 1),
-               label="hydraulic (Liebrecht)", color="0.7")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("torque [N m]")
-    ax.set_title(f"breakdown at {ps[0]['temperature_degC']:g} degC", fontsize=9)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    files["breakdown_plot"] = _save(fig, out / "breakdown.png")
-    plt.close(fig)
-
-    # roller loads around the circumference and the cage slip
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
-    for p in (ps[0], ps[-1]):
-        psi = np.degrees(p["roller_azimuth_rad"])
-        a1.plot(psi, p["roller_inner_N"], marker="o", label=f"inner, point {p['index']}")
-        a1.plot(psi, p["roller_rib_N"], marker="x", ls=":", label=f"rib, point {p['index']}")
-    a1.set_xlabel("roller azimuth from the radial load [deg]")
-    a1.set_ylabel("roller load [N]")
-    a1.legend(fontsize=8)
-    for T, gp in groups.items():
-        a2.plot([p[xkey] * xscale for p in gp], [100 * p["cage_slip"] for p in gp], marker="o",
-                label=f"{T:g} degC" if sweep != "temperature" else None)
-    a2.set_xlabel(xlabel)
-    a2.set_ylabel("cage slip [%]")
-    if sweep != "temperature":
-        a2.legend(fontsize=8)
-    fig.suptitle(title, fontsize=9)
-    fig.tight_layout()
-    files["loads_plot"] = _save(fig, out / "roller_loads_and_slip.png")
-    plt.close(fig)
-    return files
+    return run_plots(points, plot_meta_from_scene(scene), out)

@@ -171,7 +171,7 @@ def _plot(c: Comparison, path: Path) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .run import _save
+    from .plots import save_figure
 
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     ref, keg = c.reference_Nm, c.kegel_Nm
@@ -186,7 +186,8 @@ def _plot(c: Comparison, path: Path) -> Path:
     ax.set_title(f"{c.name}\nmean |dev| {100 * c.mean_abs_deviation:.1f} %, worst {100 * c.worst_deviation:+.1f} %",
                  fontsize=9)
     ax.legend(fontsize=8)
-    _save(fig, path)
+    save_figure(fig, path)
+    plt.close(fig)
     return path
 
 
