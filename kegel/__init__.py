@@ -29,6 +29,9 @@ from .lubricant import LubricantState, lubricant_state
 from .scene import OperatingPoint, Scene, load_scene
 from .tribology import ContactFriction, FrictionData, evaluate_raceway_contact, load_friction
 from .units import parse_quantity
+from . import run  # the module kegel.run (imported after the modules it uses)
+from .run import run_scene
+from .api import Bearing, FrictionResult
 
 try:
     __version__ = _pkg_version("kegel")
@@ -38,11 +41,13 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree wi
 __all__ = [
     "__version__",
     "contact",
+    "Bearing",
     "BearingData",
     "BearingGeometry",
     "ContactFriction",
     "DynamicResult",
     "FrictionData",
+    "FrictionResult",
     "KegelInputError",
     "KegelSolverError",
     "LubricantData",
@@ -65,5 +70,7 @@ __all__ = [
     "load_scene",
     "lubricant_state",
     "parse_quantity",
+    "run",
+    "run_scene",
     "simulate",
 ]

@@ -6,11 +6,16 @@ seed paper); this module only bundles them for one temperature.
 
 from __future__ import annotations
 
+import math
+import numbers
+import os
 from dataclasses import asdict, dataclass
+from typing import Any
 
 from . import _core
-from .data import LubricantData, cragoe_specific_heat_J_kgK
+from .data import LubricantData, cragoe_specific_heat_J_kgK, load_lubricant
 from .errors import KegelInputError
+from .units import parse_quantity
 
 __all__ = ["LubricantState", "lubricant_state"]
 
@@ -39,15 +44,32 @@ class LubricantState:
 TEMPERATURE_RANGE_DEGC = (-20.0, 150.0)
 
 
-def lubricant_state(lub: LubricantData, temperature_K: float, *, source: str = "<argument>",
+def lubricant_state(lub: LubricantData | str | os.PathLike, temperature_K: float | str, *, source: str = "<argument>",
                     key: str = "temperature") -> LubricantState:
-    """Evaluate a lubricant's properties at ``temperature_K`` and ambient pressure.
+    """Evaluate a lubricant's properties at a temperature and ambient pressure.
+
+    Parameters
+    ----------
+    lub
+        The lubricant (:func:`kegel.load_lubricant`) or its name (``"FVA3"``, or a data file).
+    temperature_K
+        The temperature: kelvin as a number, or a string with its unit (``"50 degC"``,
+        ``"323.15 K"``).
+    source, key
+        Where the temperature came from, for the error message.
 
     Raises
     ------
     KegelInputError
-        If the temperature is outside the domain of the lubricant's formulas.
+        If the temperature is not a temperature, or outside the domain of the lubricant's
+        formulas; if ``lub`` is not a lubricant.
     """
+    if isinstance(lub, (str, os.PathLike)):
+        lub = load_lubricant(str(lub), source=source, key="lub")
+    elif not isinstance(lub, LubricantData):
+        raise KegelInputError(source, "lub", type(lub).__name__,
+                              "a lubricant (kegel.load_lubricant) or its name, e.g. 'FVA3'")
+    temperature_K = _temperature_K(temperature_K, source=source, key=key)
     core = lub.core
     lo, hi = TEMPERATURE_RANGE_DEGC
     if not lo <= temperature_K - 273.15 <= hi:
@@ -71,3 +93,17 @@ def lubricant_state(lub: LubricantData, temperature_K: float, *, source: str = "
         thermal_conductivity_W_mK=lub.parameters.thermal_conductivity_W_mK,
         specific_heat_J_kgK=cragoe_specific_heat_J_kgK(lub, temperature_K),
     )
+
+
+def _temperature_K(value: Any, *, source: str, key: str) -> float:
+    """A temperature in kelvin from a number (kelvin) or a string with its unit."""
+    if isinstance(value, str):
+        return parse_quantity(value, "temperature", source=source, key=key)
+    scalar = isinstance(value, numbers.Real) or (getattr(value, "ndim", None) == 0 and hasattr(value, "__float__"))
+    if isinstance(value, bool) or not scalar:  # (numbers and 0-d numpy arrays)
+        raise KegelInputError(source, key, value, "a temperature: kelvin as a number, or a string with its unit, "
+                              "e.g. '50 degC'")
+    t = float(value)
+    if not math.isfinite(t):
+        raise KegelInputError(source, key, value, "a finite temperature")
+    return t

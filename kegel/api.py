@@ -1,0 +1,609 @@
+"""The Python facade: one bearing, one call, one torque, with units.
+
+::
+
+    import kegel
+    res = kegel.Bearing("32216").friction(speed="2000 rpm", axial_load="6 kN", temperature="50 degC")
+    res.friction_torque_Nm          # 3.6 (a float, N m)
+    res                             # FrictionResult(32216, 2000 rpm, Fa 6 kN, 50 degC: friction 3.6 N m, converged)
+    res.to_dataframe()              # one row per operating point (pandas)
+
+:class:`Bearing` names the bearing, lubricant, material and model fidelity;
+:meth:`Bearing.friction` solves operating points and returns a :class:`FrictionResult`. Every
+quantity is a string with its unit (``"6 kN"``, ``"2000 rpm"``, ``"50 degC"``, read by
+:func:`kegel.units.parse_quantity`) or a float in SI units (N, rad/s, K, m); a list of them sweeps
+that quantity (several lists: every combination, speed varying fastest).
+
+The facade is a thin layer over the scene machinery: it writes the scene dictionary a scene file
+would hold (:mod:`kegel.scene`), validates it with :func:`kegel.scene.scene_from_dict` and solves
+it with :func:`kegel.run.run_scene` in memory (no files). A result therefore equals that of the
+equivalent scene file, and bad input raises :class:`kegel.KegelInputError` naming the argument.
+
+Hydraulic losses of an oil bath: ``hydraulic=None`` takes the scene's default (Liebrecht's
+correlation, seed paper Eq. 38-40, for an oil bath; none for minimum-quantity lubrication);
+``"liebrecht"``, ``"skf"`` (the SKF catalogue model's drag moment, which a scene expresses only
+in a ``[study]``: the facade solves the contact friction of the oil-bath scene without a
+hydraulic loss and adds :func:`kegel.correlations.hydraulic_torques` ``("skf", ...)`` to each
+point, as a study does) or ``"none"``. CFD losses need ``kegel cfd run`` results: use a scene file
+with ``model.hydraulic = "cfd"``.
+
+The facade solves the quasi-static model (the dynamic simulation writes its time series to files:
+use a scene file with ``model.solution = "dynamic"``). As ``kegel run`` does, the run prints each
+warning code once on stderr; every point's warnings are in ``FrictionResult.points`` and
+``FrictionResult.warnings``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import numbers
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
+from .errors import KegelInputError
+from .units import KINDS, parse_quantity
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pandas
+
+    from .geometry import BearingGeometry
+    from .scene import Scene
+
+__all__ = ["Bearing", "FrictionResult"]
+
+#: ``source`` of the errors each entry point raises (the argument is the error's ``key``).
+_SOURCE_BEARING = "kegel.Bearing"
+_SOURCE_FRICTION = "kegel.Bearing.friction"
+
+#: The operating quantities of :meth:`Bearing.friction`: argument -> kind of quantity.
+_QUANTITIES = {
+    "speed": "speed",
+    "axial_load": "force",
+    "axial_offset": "length",
+    "radial_load": "force",
+    "temperature": "temperature",
+}
+_OIL_LEVEL_WORDS = ("flooded", "shaft_center", "half_roller")
+_HYDRAULIC = ("none", "liebrecht", "skf")
+#: scene keys -> the argument of the facade that sets them (for the error messages)
+_SCENE_KEY_ARGUMENT = {
+    "bearing.designation": "designation",
+    "bearing.material": "material",
+    "lubricant.name": "lubricant",
+    "model.fidelity": "fidelity",
+    "model.tolerance": "fidelity",
+    "model.hydraulic": "hydraulic",
+    "lubrication": "lubrication",
+}
+#: Points listed by the repr of a sweep (the rest: ``to_dataframe()``).
+_REPR_POINTS = 6
+
+
+class Bearing:
+    """A tapered roller bearing with its lubricant, material and model fidelity.
+
+    Parameters
+    ----------
+    designation
+        A bearing of kegel's data (``"32216"``, see :func:`kegel.available_bearings`) or the path
+        of a bearing ``.toml`` file.
+    lubricant
+        A lubricant name (``"FVA3"``, see :func:`kegel.available_lubricants`) or a data file.
+    material
+        A material name (``"bearing_steel"``) or a data file.
+    fidelity
+        Model fidelity: ``"fast"``, ``"default"``, ``"fine"`` (see
+        :data:`kegel.scene.FIDELITY_PRESETS`) or ``"auto"`` (kegel chooses the cheapest preset
+        within 1 % of ``fine``).
+
+    Raises
+    ------
+    KegelInputError
+        Unknown bearing, lubricant, material or fidelity; the message names the argument.
+
+    Examples
+    --------
+    >>> b = kegel.Bearing("32216", fidelity="fast")
+    >>> b.friction(speed="2000 rpm", axial_load="6 kN").friction_torque_Nm  # doctest: +SKIP
+    4.0695...
+    """
+
+    def __init__(self, designation: str | Path, *, lubricant: str | Path = "FVA3",
+                 material: str | Path = "bearing_steel", fidelity: str = "default") -> None:
+        from .scene import FIDELITY_PRESETS
+
+        self._designation = _name_argument(designation, "designation", "a bearing designation such as '32216' or "
+                                           "the path of a bearing .toml file")
+        self._lubricant = _name_argument(lubricant, "lubricant", "a lubricant name such as 'FVA3' or a data file")
+        self._material = _name_argument(material, "material", "a material name such as 'bearing_steel' or a data "
+                                        "file")
+        # loaded now: a misspelt name fails here, with the known names listed
+        self.data: BearingData = load_bearing(self._designation, source=_SOURCE_BEARING, key="designation")
+        self.lubricant: LubricantData = load_lubricant(self._lubricant, source=_SOURCE_BEARING, key="lubricant")
+        self.material: MaterialData = load_material(self._material, source=_SOURCE_BEARING, key="material")
+        choices = (*FIDELITY_PRESETS, "auto")
+        if not isinstance(fidelity, str) or fidelity not in choices:
+            raise KegelInputError(_SOURCE_BEARING, "fidelity", fidelity, f"one of {', '.join(choices)}")
+        self.fidelity: str = fidelity
+
+    @property
+    def designation(self) -> str:
+        """The bearing's designation (from its data file)."""
+        return str(self.data.designation)
+
+    @cached_property
+    def geometry(self) -> "BearingGeometry":
+        """The bearing's derived internal geometry (:func:`kegel.derive_geometry`)."""
+        from .geometry import derive_geometry
+
+        return derive_geometry(self.data, self.material)
+
+    def __repr__(self) -> str:
+        return (f"Bearing({self.designation!r}, lubricant={self.lubricant.name!r}, material={self.material.name!r}, "
+                f"fidelity={self.fidelity!r})")
+
+    def scene(self, speed: Any, axial_load: Any = None, *, temperature: Any = "50 degC", radial_load: Any = "0 kN",
+              axial_offset: Any = None, lubrication: str | float = "minimum_quantity",
+              hydraulic: str | None = None) -> dict[str, Any]:
+        """The scene dictionary (the content of a scene file, see :mod:`kegel.scene`) that
+        :meth:`friction` solves; the arguments are those of :meth:`friction`.
+
+        With ``hydraulic="skf"`` the scene has an oil bath and no hydraulic loss
+        (``model.hydraulic = "none"``): :meth:`friction` adds the SKF drag to its points.
+
+        Raises
+        ------
+        KegelInputError
+            An argument that is not what it should be; the message names it.
+        """
+        operating: dict[str, Any] = {"speed": _quantity_text(speed, "speed")}
+        if (axial_load is None) == (axial_offset is None):
+            raise KegelInputError(_SOURCE_FRICTION, "axial_load", axial_load,
+                                  "exactly one of axial_load (force-controlled, e.g. '6 kN') and axial_offset "
+                                  "(displacement-controlled preload, e.g. '20 um')")
+        if axial_load is not None:
+            operating["axial_load"] = _quantity_text(axial_load, "axial_load")
+        else:
+            operating["axial_offset"] = _quantity_text(axial_offset, "axial_offset")
+        operating["radial_load"] = _quantity_text(radial_load, "radial_load")
+        operating["temperature"] = _quantity_text(temperature, "temperature")
+
+        lub_table = _lubrication_table(lubrication)
+        model: dict[str, Any] = {"fidelity": self.fidelity}
+        method = _hydraulic_method(hydraulic, lub_table)
+        if hydraulic is not None:
+            model["hydraulic"] = {"none": "none", "liebrecht": "correlation", "skf": "none"}[method]
+        return {
+            "scene": {"name": f"{self.designation}, kegel.Bearing.friction"},
+            "bearing": {"designation": self._designation, "material": self._material},
+            "lubricant": {"name": self._lubricant},
+            "operating": operating,
+            "lubrication": lub_table,
+            "model": model,
+        }
+
+    def friction(self, speed: Any, axial_load: Any = None, *, temperature: Any = "50 degC",
+                 radial_load: Any = "0 kN", axial_offset: Any = None, lubrication: str | float = "minimum_quantity",
+                 hydraulic: str | None = None) -> "FrictionResult":
+        """Friction torque (and hydraulic loss) at one operating point or a sweep.
+
+        Parameters
+        ----------
+        speed
+            Inner-ring speed (outer ring fixed), e.g. ``"2000 rpm"``; a float is rad/s.
+        axial_load
+            Axial load (force-controlled), e.g. ``"6 kN"``; a float is N. Exactly one of
+            ``axial_load`` and ``axial_offset`` is given.
+        temperature
+            Oil and bearing temperature, e.g. ``"50 degC"``; a float is K.
+        radial_load
+            Radial load, e.g. ``"2 kN"``; a float is N.
+        axial_offset
+            Axial offset of the inner ring towards the apex (displacement-controlled preload),
+            e.g. ``"20 um"``; a float is m.
+        lubrication
+            ``"minimum_quantity"`` (no oil bath) or the oil level of an oil bath: ``"flooded"``,
+            ``"shaft_center"``, ``"half_roller"`` or a height above the lowest point of the
+            outer diameter (``"40 mm"``; a float is m).
+        hydraulic
+            Hydraulic loss of the oil bath: ``None`` (Liebrecht for an oil bath, none for minimum
+            quantity), ``"liebrecht"``, ``"skf"`` (SKF catalogue drag moment) or ``"none"``.
+
+        Each quantity may be a list (or 1-D array): the result then holds one point per
+        combination (speed varying fastest), and its figures are arrays.
+
+        Returns
+        -------
+        FrictionResult
+
+        Raises
+        ------
+        KegelInputError
+            A bad argument (wrong unit, out of range, unknown word); the message names it.
+        """
+        from .run import run_scene
+        from .scene import scene_from_dict
+
+        raw = self.scene(speed, axial_load, temperature=temperature, radial_load=radial_load,
+                         axial_offset=axial_offset, lubrication=lubrication, hydraulic=hydraulic)
+        method = _hydraulic_method(hydraulic, raw["lubrication"])
+        try:
+            scene = scene_from_dict(raw, source=_SOURCE_FRICTION)
+        except KegelInputError as exc:
+            raise _as_argument_error(exc) from None
+        run = run_scene(scene, write=False, progress=False)
+        points = run.points
+        if method == "skf":
+            points = [_with_skf_drag(scene, p) for p in points]
+        return FrictionResult._from_points(
+            points, designation=self.designation, lubricant=scene.lubricant.name, material=scene.material.name,
+            fidelity=scene.fidelity.name, lubrication=scene.lubrication_label, hydraulic_method=method,
+            swept=scene.swept, runtime_s=run.runtime_s)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class FrictionResult:
+    """The result of :meth:`Bearing.friction`: its main figures and every point's record.
+
+    The figures are floats for one operating point and arrays (one value per point, NaN where a
+    point failed) for a sweep. ``points`` holds the full records of :func:`kegel.run.run_scene`
+    (load distribution, breakdown by contact and mechanism, film parameters, the SKF catalogue
+    model beside kegel, warnings).
+
+    Attributes
+    ----------
+    designation, lubricant, material
+        What was solved.
+    fidelity
+        The fidelity preset as given (``"fast"``, ``"default"``, ``"fine"``, ``"auto"``).
+    lubrication
+        E.g. ``"minimum quantity"``, ``"oil bath, flooded"``.
+    hydraulic_method
+        ``"none"``, ``"liebrecht"`` or ``"skf"``.
+    speed_rpm, temperature_degC, axial_load_N, axial_offset_m, radial_load_N
+        The operating point(s); ``axial_load_N`` is None (NaN) for displacement-controlled points.
+    friction_torque_Nm
+        Contact friction torque at the inner ring (drive torque) [N m].
+    hydraulic_torque_Nm
+        Hydraulic loss of the oil bath [N m] (0 without one).
+    total_torque_Nm
+        ``friction_torque_Nm + hydraulic_torque_Nm``.
+    converged
+        Whether every point converged (``points[i]["converged"]`` for each).
+    failure
+        The first failure message, or None.
+    swept
+        The quantities that vary over the points.
+    points
+        The records, one per operating point.
+    runtime_s
+        Wall time of the run.
+    """
+
+    designation: str
+    lubricant: str
+    material: str
+    fidelity: str
+    lubrication: str
+    hydraulic_method: str
+    speed_rpm: float | np.ndarray
+    temperature_degC: float | np.ndarray
+    axial_load_N: float | None | np.ndarray
+    axial_offset_m: float | None | np.ndarray
+    radial_load_N: float | np.ndarray
+    friction_torque_Nm: float | np.ndarray
+    hydraulic_torque_Nm: float | np.ndarray
+    total_torque_Nm: float | np.ndarray
+    converged: bool
+    failure: str | None
+    swept: tuple[str, ...] = ()
+    points: list[dict[str, Any]] = field(default_factory=list)
+    runtime_s: float = 0.0
+
+    @classmethod
+    def _from_points(cls, points: list[dict[str, Any]], **meta: Any) -> "FrictionResult":
+        def per_point(key: str) -> Any:
+            values = [p.get(key) for p in points]
+            if len(values) == 1:
+                return None if values[0] is None else float(values[0])
+            if all(v is None for v in values) and key.startswith("axial_"):
+                return None
+            return np.array([np.nan if v is None else float(v) for v in values])
+
+        failures = [p.get("failure") for p in points if not p.get("converged", False)]
+        return cls(**meta, speed_rpm=per_point("speed_rpm"), temperature_degC=per_point("temperature_degC"),
+                   axial_load_N=per_point("axial_load_N"), axial_offset_m=per_point("axial_offset_m"),
+                   radial_load_N=per_point("radial_load_N"), friction_torque_Nm=_nan(per_point("friction_torque_Nm")),
+                   hydraulic_torque_Nm=_nan(per_point("hydraulic_torque_Nm")),
+                   total_torque_Nm=_nan(per_point("total_torque_Nm")),
+                   converged=bool(points) and all(bool(p.get("converged")) for p in points),
+                   failure=next((str(f) for f in failures if f), "not converged" if failures else None),
+                   points=points)
+
+    # --- sequence of points ------------------------------------------------------------------
+    def __len__(self) -> int:
+        return len(self.points)
+
+    def __getitem__(self, index: int) -> "FrictionResult":
+        """The result of one operating point of a sweep."""
+        if isinstance(index, bool) or not isinstance(index, numbers.Integral):
+            raise TypeError(f"FrictionResult indices are integers, not {type(index).__name__}")
+        point = self.points[index]  # IndexError when out of range
+        meta = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)
+                if f.name in ("designation", "lubricant", "material", "fidelity", "lubrication",
+                              "hydraulic_method", "runtime_s")}
+        return FrictionResult._from_points([point], **meta, swept=())
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+    # --- breakdowns --------------------------------------------------------------------------
+    @property
+    def torque_by_contact_Nm(self) -> dict[str, float | np.ndarray]:
+        """Friction torque by contact (outer and inner raceway, rib, cage) [N m]."""
+        return self._breakdown("torque_by_contact_Nm")
+
+    @property
+    def torque_by_mechanism_Nm(self) -> dict[str, float | np.ndarray]:
+        """Friction torque by mechanism (EHL sliding and rolling, solid sliding and rolling,
+        hysteresis) [N m]."""
+        return self._breakdown("torque_by_mechanism_Nm")
+
+    @property
+    def Lambda_min(self) -> float | np.ndarray:
+        """Smallest film parameter Lambda over the contacts (< 1: mixed lubrication)."""
+        vals = [min((p.get("Lambda_min") or {}).values(), default=math.nan) for p in self.points]
+        return float(vals[0]) if len(vals) == 1 else np.array(vals, dtype=float)
+
+    @property
+    def warnings(self) -> list[str]:
+        """The warning codes of the points (each once; see :mod:`kegel.point_warnings`)."""
+        return list(dict.fromkeys(w["code"] for p in self.points for w in p.get("warnings", ())))
+
+    def _breakdown(self, key: str) -> dict[str, float | np.ndarray]:
+        names = list(dict.fromkeys(k for p in self.points for k in (p.get(key) or {})))
+        if len(self.points) == 1:
+            return {k: float(self.points[0][key][k]) for k in names}
+        return {k: np.array([(p.get(key) or {}).get(k, np.nan) for p in self.points], dtype=float) for k in names}
+
+    # --- output ------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        if len(self.points) == 1:
+            return f"FrictionResult({self.designation}, {_point_line(self.points[0], self.hydraulic_method)})"
+        n = len(self.points)
+        ok = sum(bool(p.get("converged")) for p in self.points)
+        head = (f"FrictionResult({self.designation}, {n} points over {', '.join(self.swept) or 'operating points'}, "
+                f"{ok}/{n} converged)")
+        lines = [head] + [f"  [{i}] {_point_line(p, self.hydraulic_method)}"
+                          for i, p in enumerate(self.points[:_REPR_POINTS])]
+        if n > _REPR_POINTS:
+            lines.append(f"  ... {n - _REPR_POINTS} more (to_dataframe() for every point)")
+        return "\n".join(lines)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary: the figures and every point's record (no numpy types; NaN
+        becomes None)."""
+        out = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+        out["swept"] = list(self.swept)
+        return _json_ready(out)
+
+    def to_dataframe(self) -> "pandas.DataFrame":
+        """One row per operating point with flat columns: the point's scalars,
+        ``torque_<contact>_Nm``, ``torque_<mechanism>_Nm``, ``power_<contact>_<mechanism>_W``,
+        ``Lambda_min`` and ``Lambda_min_<contact>``, the hydraulic loss's components
+        (``hydraulic_*``), the SKF catalogue model (``skf_*``), the oil's properties
+        (``lubricant_*``) and the warning codes. ``DataFrame.attrs`` holds the bearing,
+        lubricant, material, fidelity, lubrication and hydraulic method.
+
+        Raises
+        ------
+        ImportError
+            When pandas is not installed.
+        """
+        try:
+            import pandas as pd
+        except ImportError as exc:
+            raise ImportError("FrictionResult.to_dataframe() needs pandas, which is not installed "
+                              "(pip install pandas); to_dict() needs nothing") from exc
+        df = pd.DataFrame([_flat_row(p) for p in self.points])
+        df.attrs.update({k: getattr(self, k) for k in ("designation", "lubricant", "material", "fidelity",
+                                                        "lubrication", "hydraulic_method")})
+        return df
+
+
+# --- helpers ---------------------------------------------------------------------------------
+
+def _name_argument(value: Any, name: str, expected: str) -> str:
+    if isinstance(value, Path):
+        return str(value)
+    if isinstance(value, bool) or not isinstance(value, (str, numbers.Integral)) or not str(value).strip():
+        raise KegelInputError(_SOURCE_BEARING, name, value, expected)
+    return str(value)
+
+
+def _quantity_text(value: Any, name: str) -> str | list[str]:
+    """An operating quantity as the scene writes it: the string as given (checked here, so the
+    error names the argument) or an SI float with its SI unit; a list for a sweep."""
+    if isinstance(value, (list, tuple, np.ndarray)):
+        items = np.asarray(value, dtype=object).ravel().tolist() if isinstance(value, np.ndarray) else list(value)
+        if not items:
+            raise KegelInputError(_SOURCE_FRICTION, name, value, "a sweep with at least one value")
+        return [_one_quantity(v, f"{name}[{i}]", name) for i, v in enumerate(items)]
+    return _one_quantity(value, name, name)
+
+
+def _one_quantity(value: Any, key: str, name: str) -> str:
+    kind = KINDS[_QUANTITIES[name]]
+    if hasattr(value, "magnitude") and hasattr(value, "units") and np.ndim(value.magnitude) == 0:
+        value = str(value)  # a pint quantity (any registry): "6 kilonewton"
+    if isinstance(value, str):
+        parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
+        return value
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        v = float(value)
+        if not math.isfinite(v):
+            raise KegelInputError(_SOURCE_FRICTION, key, value, f"a finite {kind.description[2:]}")
+        return f"{v!r} {kind.si_unit}"
+    raise KegelInputError(_SOURCE_FRICTION, key, value,
+                          f"{kind.description} with its unit, e.g. '{kind.example}', a float in {kind.si_unit}, "
+                          "or a list of them (a sweep)")
+
+
+def _lubrication_table(lubrication: Any) -> dict[str, Any]:
+    expected = ("'minimum_quantity' or the oil level of an oil bath: 'flooded', 'shaft_center', 'half_roller' or a "
+                "height above the lowest point of the outer diameter, e.g. '40 mm' (a float: m)")
+    if lubrication in ("minimum_quantity", "none"):
+        return {"mode": "minimum_quantity"}
+    if lubrication in _OIL_LEVEL_WORDS:
+        return {"mode": "oil_bath", "oil_level": lubrication}
+    if isinstance(lubrication, str):
+        try:
+            parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
+        except KegelInputError:
+            raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected) from None
+        return {"mode": "oil_bath", "oil_level": lubrication}
+    if isinstance(lubrication, numbers.Real) and not isinstance(lubrication, bool) and math.isfinite(lubrication):
+        return {"mode": "oil_bath", "oil_level": f"{float(lubrication)!r} m"}
+    raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected)
+
+
+def _hydraulic_method(hydraulic: Any, lub_table: dict[str, Any]) -> str:
+    oil_bath = lub_table["mode"] == "oil_bath"
+    if hydraulic is None:
+        return "liebrecht" if oil_bath else "none"
+    if not isinstance(hydraulic, str) or hydraulic not in _HYDRAULIC:
+        raise KegelInputError(_SOURCE_FRICTION, "hydraulic", hydraulic,
+                              f"None or one of {', '.join(_HYDRAULIC)} (CFD losses: a scene file with "
+                              "model.hydraulic = \"cfd\", see kegel.scene)")
+    if hydraulic != "none" and not oil_bath:
+        raise KegelInputError(_SOURCE_FRICTION, "hydraulic", hydraulic,
+                              "None or 'none' for minimum-quantity lubrication (no oil bath to churn); give "
+                              "lubrication an oil level for a hydraulic loss")
+    return hydraulic
+
+
+def _as_argument_error(exc: KegelInputError) -> KegelInputError:
+    """A scene's error (``operating.axial_load[1]``) as the facade's (``axial_load[1]``)."""
+    key = exc.key
+    if key.startswith("operating."):
+        key = key[len("operating."):]
+    elif key.startswith("lubrication"):
+        key = "lubrication"
+    else:
+        key = _SCENE_KEY_ARGUMENT.get(key, key)
+    # the scene's advice names its keys ("use operating.axial_offset"): the facade's are the arguments
+    expected = exc.expected.replace("operating.", "")
+    return KegelInputError(_SOURCE_FRICTION, key, exc.value, expected)
+
+
+def _with_skf_drag(scene: "Scene", point: dict[str, Any]) -> dict[str, Any]:
+    """A point's record with the SKF drag moment as its hydraulic loss (as a study adds it)."""
+    from .correlations import hydraulic_torques
+    from .lubricant import lubricant_state
+
+    state = lubricant_state(scene.lubricant, point["temperature_K"], source=scene.source, key="temperature")
+    h = hydraulic_torques("skf", scene.geometry, state, shaft_speed_rad_s=point["speed_rad_s"],
+                          oil_level_m=scene.lubrication.oil_level_m)
+    friction = point.get("friction_torque_Nm")
+    out = {**point, "hydraulic_torque_Nm": h.total_Nm,
+           "total_torque_Nm": None if friction is None else friction + h.total_Nm, "hydraulic": h.as_dict()}
+    warnings = list(point.get("warnings", ()))
+    if all(w.get("code") != "skf_constants_to_verify" for w in warnings):
+        warnings.append({"code": "skf_constants_to_verify",
+                         "message": "the SKF drag moment uses the V_M diagram digitisation and constants marked "
+                                    "verify (kegel.correlations.skf)"})
+    out["warnings"] = warnings
+    return out
+
+
+def _nan(value: Any) -> Any:
+    return math.nan if value is None else value
+
+
+def _fmt(value: Any, spec: str) -> str:
+    return "-" if value is None or (isinstance(value, float) and math.isnan(value)) else format(value, spec)
+
+
+def _point_line(p: dict[str, Any], method: str) -> str:
+    """One operating point in a line: conditions, torques, convergence."""
+    cond = [f"{_fmt(p.get('speed_rpm'), '.6g')} rpm"]
+    if p.get("axial_load_N") is not None:
+        cond.append(f"Fa {p['axial_load_N'] / 1e3:.4g} kN")
+    elif p.get("axial_offset_m") is not None:
+        cond.append(f"offset {p['axial_offset_m'] * 1e6:.4g} um")
+    if p.get("radial_load_N"):
+        cond.append(f"Fr {p['radial_load_N'] / 1e3:.4g} kN")
+    cond.append(f"{_fmt(p.get('temperature_degC'), '.4g')} degC")
+    figures = [f"friction {_fmt(p.get('friction_torque_Nm'), '.3g')} N m"]
+    if method != "none":
+        figures.append(f"hydraulic {_fmt(p.get('hydraulic_torque_Nm'), '.3g')} N m ({method})")
+        figures.append(f"total {_fmt(p.get('total_torque_Nm'), '.3g')} N m")
+    if p.get("converged"):
+        state = "converged"
+    else:
+        msg = " ".join(str(p.get("failure") or "").split())
+        state = "NOT converged" + (f": {msg[:60]}{'...' if len(msg) > 60 else ''}" if msg else "")
+    return f"{', '.join(cond)}: {', '.join(figures)}, {state}"
+
+
+def _json_ready(x: Any) -> Any:
+    """Plain Python types for JSON: numpy arrays and scalars converted, NaN and inf as None."""
+    if isinstance(x, dict):
+        return {str(k): _json_ready(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_json_ready(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return [_json_ready(v) for v in x.tolist()]
+    if isinstance(x, np.generic):
+        return _json_ready(x.item())
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    if isinstance(x, Path):
+        return str(x)
+    return x
+
+
+#: Sub-dictionaries of a record flattened into columns with a prefix (others: by their own rule).
+_FLAT_PREFIX = {"skf_catalogue_model": "skf_", "lubricant_state": "lubricant_"}
+
+
+def _flat_row(p: dict[str, Any]) -> dict[str, Any]:
+    """A point's record as one flat row (scalars only; the per-roller lists stay in ``points``)."""
+    row: dict[str, Any] = {}
+    for key, value in p.items():
+        if value is None or isinstance(value, (bool, int, float, str, np.generic)):
+            row[key] = value.item() if isinstance(value, np.generic) else value
+        elif key == "torque_by_contact_Nm" or key == "torque_by_mechanism_Nm":
+            row.update({f"torque_{k}_Nm": v for k, v in value.items()})
+        elif key == "power_W":
+            row.update({f"power_{c}_{k}_W": v for c, ks in value.items() if isinstance(ks, dict)
+                        for k, v in ks.items()})
+        elif key in ("Lambda_min", "phi_max") and isinstance(value, dict):
+            if key == "Lambda_min":
+                row["Lambda_min"] = min(value.values(), default=None)
+                row["Lambda_min_contact"] = min(value, key=value.get) if value else None
+            row.update({f"{key}_{c}": v for c, v in value.items()})
+        elif key == "hydraulic" and isinstance(value, dict):
+            for k, v in value.items():
+                if k in ("correlation", "source"):
+                    row["hydraulic_source"] = v
+                elif k == "components" and isinstance(v, dict):
+                    row.update({f"hydraulic_{c}": cv for c, cv in v.items() if _scalar(cv)})
+                elif _scalar(v):
+                    row[f"hydraulic_{k}"] = v
+        elif key in _FLAT_PREFIX and isinstance(value, dict):
+            skip = {"name", "temperature_K", "temperature_degC"}
+            row.update({f"{_FLAT_PREFIX[key]}{k}": v for k, v in value.items() if k not in skip and _scalar(v)})
+        elif key == "warnings":
+            row["warnings"] = "; ".join(w.get("code", "") for w in value)
+    return row
+
+
+def _scalar(v: Any) -> bool:
+    return v is None or isinstance(v, (bool, int, float, str, np.generic))
