@@ -55,7 +55,7 @@ def test_kegel_against_the_skf_catalogue_model_measured_figure(skf, table):
 @pytest.mark.xfail(strict=True, reason="kegel is 40-44 % below the SKF model at 500 rpm (Biboulet-Houpert's EHL "
                                        "rolling force grows as u^0.75, SKF's as (nu n)^0.6 with a load term), and "
                                        "under a growing radial load kegel's torque falls where SKF's rises (Table 3: "
-                                       "-40 % at 15 kN); see README 'Validation'")
+                                       "-40 % at 15 kN); see docs/validation.md")
 @pytest.mark.parametrize("table", sorted(MEASURED))
 def test_kegel_against_the_skf_catalogue_model_meets_the_targets(skf, table):
     c = skf[table]
