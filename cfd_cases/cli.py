@@ -6,6 +6,7 @@ import argparse
 import json
 import math
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -309,8 +310,14 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
     from .validation import rotating_tank, taylor_couette
 
+    # two small OpenFOAM runs: say what runs, so minutes of silence are not mistaken for a hang
+    t0 = time.monotonic()
+    print("cfd validate: 1/2 Taylor-Couette annulus (simpleFoam, steady) ...", file=sys.stderr, flush=True)
     tc = taylor_couette()
+    print(f"cfd validate: 2/2 rotating tank (interFoam, VOF) ... ({time.monotonic() - t0:.0f} s so far)",
+          file=sys.stderr, flush=True)
     tank = rotating_tank()
+    print(f"cfd validate: done in {time.monotonic() - t0:.0f} s", file=sys.stderr, flush=True)
     ok_tc = abs(tc.relative_error) < 0.02
     ok_tank = tank.max_height_error_m < 0.25 * tank.cell_height_m and abs(tank.volume_change) < 1e-4
     if args.format == "json":
@@ -332,12 +339,13 @@ def add_cfd_parser(sub, common) -> None:
 
     def point_args(sp, many: bool) -> None:
         sp.add_argument("--bearing", default="32208", help="bearing designation (default 32208)")
-        sp.add_argument("--lubricant", default="FVA3")
+        sp.add_argument("--lubricant", default="FVA3", help="lubricant name or .toml file (default FVA3)")
         sp.add_argument("--temperature", default="50 degC", help='oil temperature (default "50 degC")')
         if many:
             sp.add_argument("--speed", action="append", help='shaft speed (repeatable), e.g. "2000 rpm"')
             sp.add_argument("--oil-level", action="append",
-                            help="flooded, none, half_roller, shaft_center or a length (repeatable)")
+                            help="flooded, half_roller, shaft_center or a length above the lowest point of the "
+                                 "outer diameter (repeatable)")
         else:
             sp.add_argument("--speed", default="2000 rpm", help='shaft speed (default "2000 rpm")')
             sp.add_argument("--oil-level", default="flooded",

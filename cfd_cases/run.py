@@ -478,11 +478,12 @@ class _Progress:
     The ETA is to the end time (``end``, simulated seconds or iterations, named in the line); a
     steady torque usually stops the run sooner, at a point no one can foresee."""
 
-    def __init__(self, every_s: float = 5.0, stream=sys.stderr, end: str = ""):
+    def __init__(self, every_s: float = 5.0, stream=sys.stderr, end: str = "", monitor: "_SteadyMonitor | None" = None):
         self.every_s = every_s
         self.stream = stream
         self.last = 0.0
         self.end = end
+        self.monitor = monitor  # its steady test's state is what tells when the run ends
 
     def __call__(self, st: LogState, eta: float) -> None:
         now = time.monotonic()
@@ -496,7 +497,13 @@ class _Progress:
         else:
             head = f"iteration {st.time:.0f}"
         to = f" to {self.end}" if self.end else ""
-        print(f"cfd: {head}  {res}  ETA{to} {eta_txt}", file=self.stream, flush=True)
+        status = self.monitor.status if self.monitor is not None and self.monitor.tol > 0.0 else ""
+        if status:
+            # a steady torque ends the run, usually long before the end time: say how far the
+            # steady test is, and give the end time's ETA as the latest end
+            print(f"cfd: {head}  {res}  {status}; at the latest{to}, ETA {eta_txt}", file=self.stream, flush=True)
+        else:
+            print(f"cfd: {head}  {res}  ETA{to} {eta_txt}", file=self.stream, flush=True)
 
 
 class _SteadyMonitor:
@@ -535,6 +542,9 @@ class _SteadyMonitor:
         self.checked_until = -math.inf  # the test has been applied at the check points up to here
         self.test = SteadyTest(window_s, tol, hold=hold_s)  # check points start at min_time_s
         self.window: tuple[float, float] | None = None
+        #: the steady test's state in words, for the progress line
+        self.status = ("steady test from iteration 200" if flooded else
+                       f"steady test from t = {min_time_s:.3g} s (own time)")
 
     def _check_points(self, t_end: float, t_min: float) -> np.ndarray:
         """The check points in (checked_until, t_end] from t_min on (multiples of the step)."""
@@ -559,6 +569,13 @@ class _SteadyMonitor:
             return False
         ts = self.test.update(t, loss, self._check_points(float(t[-1]), self.min_time_s))
         if ts is None:
+            drift = steady_drift(t, loss, self.window_s)
+            if drift is not None and t[-1] >= self.min_time_s:
+                scale = max(abs(drift.estimate), 1e-300)
+                d2 = abs(drift.means[2] - drift.means[1])
+                worst = max(abs(drift.remaining), d2) / (self.tol * scale)
+                self.status = (f"loss {1e3 * drift.estimate:.3g} mN m, change {worst:.1f} x the steady limit"
+                               if math.isfinite(worst) else f"loss {1e3 * drift.means[2]:.3g} mN m, still drifting")
             return False
         self.window = (ts - self.window_s, ts)
         return True
@@ -577,6 +594,9 @@ class _SteadyMonitor:
                 continue
             m = series["inner_ring"].moment_total[upto - k:upto, 2]
             scale = max(abs(float(m.mean())), 1e-300)
+            spread = max(float(np.ptp(series[b].moment_total[upto - k:upto, 2])) for b in self.BODIES)
+            self.status = (f"inner ring {1e3 * float(m.mean()):.3g} mN m, torque spread "
+                           f"{spread / (0.25 * self.tol * scale):.1f} x the steady limit")
             if all(np.ptp(series[b].moment_total[upto - k:upto, 2]) <= 0.25 * self.tol * scale
                    for b in self.BODIES):
                 self.window = (float(t[upto - k]), float(t[upto - 1]))
@@ -641,7 +661,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
         return False
 
     summary = run_solver(case, solver, n_procs=point.n_procs, end_time=end,
-                         progress=_Progress(end=f"iteration {end:.0f}" if point.flooded else f"t = {end:g} s")
+                         progress=_Progress(end=f"iteration {end:.0f}" if point.flooded else f"t = {end:g} s",
+                                            monitor=monitor, every_s=5.0 if sys.stderr.isatty() else 30.0)
                          if progress else None, stop_when=stop_when,
                          max_courant=max(25.0, 5.0 * point.max_courant) if not point.flooded else 1e30)
     runtime = time.monotonic() - t0

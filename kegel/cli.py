@@ -187,20 +187,28 @@ def _cmd_losses(args: argparse.Namespace) -> int:
     lub = load_lubricant(args.lubricant, source=src, key="--lubricant")
     T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
     state = lubricant_state(lub, T, source=src, key="--temperature")
-    speeds_text = args.speed or ["500 rpm", "4000 rpm"]
-    if len(speeds_text) != 2:
-        raise KegelInputError(src, "--speed", speeds_text, "two speeds (from, to), e.g. --speed '500 rpm' --speed '4000 rpm'")
-    lo, hi = (check_speed(parse_quantity(t, "speed", source=src, key="--speed"), bearing, source=src, key="--speed",
-                          text=t) for t in speeds_text)
-    if args.points < 1:
-        raise KegelInputError(src, "--points", args.points, "at least one point")
+    # --speed means one speed (repeatable: a list), as in `kegel cfd sweep`; a range is --speed-range
+    if args.speed and args.speed_range:
+        raise KegelInputError(src, "--speed", args.speed, "either --speed (a list) or --speed-range FROM TO, not both")
+    if args.points is not None and args.speed:
+        raise KegelInputError(src, "--points", args.points, "--points only with --speed-range (or the default range)")
+    points = 8 if args.points is None else args.points
+    if points < 1:
+        raise KegelInputError(src, "--points", points, "at least one point")
+    key = "--speed" if args.speed else "--speed-range"
+    speeds_text = args.speed or args.speed_range or ["500 rpm", "4000 rpm"]
+    values = [check_speed(parse_quantity(t, "speed", source=src, key=key), bearing, source=src, key=key, text=t)
+              for t in speeds_text]
     loads = {}
     for key, text in (("--axial-load", args.axial_load), ("--radial-load", args.radial_load)):
         loads[key] = parse_quantity(text, "force", source=src, key=key)
         if not loads[key] >= 0.0:
             raise KegelInputError(src, key, text, "a force >= 0, e.g. '6 kN'")
     fa, fr = loads["--axial-load"], loads["--radial-load"]
-    speeds = np.linspace(lo, hi, args.points) if args.points > 1 else np.array([lo])
+    if args.speed:
+        speeds = np.array(values)
+    else:
+        speeds = np.linspace(values[0], values[1], points) if points > 1 else np.array(values[:1])
     levels_text = args.oil_level or ["half_roller", "shaft_center", "flooded"]
     levels = [(t, resolve_oil_level(t, bearing, source=src, key="--oil-level")) for t in levels_text]
     try:
@@ -654,15 +662,16 @@ def _parser() -> argparse.ArgumentParser:
 
     tr = sub.add_parser("tribology", help="film and friction of one roller/raceway contact")
     tr.add_argument("--bearing", default="32216", help="bearing designation (default 32216)")
-    tr.add_argument("--material", default="bearing_steel")
-    tr.add_argument("--lubricant", default="FVA3")
+    tr.add_argument("--material", default="bearing_steel", help="roller material (default: bearing_steel)")
+    tr.add_argument("--lubricant", default="FVA3", help="lubricant name or .toml file (default FVA3)")
     tr.add_argument("--friction", default="steel_mineral_oil", help="friction parameter set")
     tr.add_argument("--temperature", default="50 degC", help='bulk oil temperature (default "50 degC")')
     tr.add_argument("--speed", default="2000 rpm", help='shaft (inner-ring) speed (default "2000 rpm")')
     tr.add_argument("--axial-load", default="6 kN", help='bearing axial load shared by the rollers (default "6 kN")')
     tr.add_argument("--contact-load", help="normal load of the contact instead of --axial-load")
-    tr.add_argument("--contact", choices=("inner", "outer"), default="inner")
-    tr.add_argument("--slices", type=int, default=30)
+    tr.add_argument("--contact", choices=("inner", "outer"), default="inner",
+                    help="the raceway contact: inner or outer (default inner)")
+    tr.add_argument("--slices", type=int, default=30, help="slices along the roller (default 30)")
     tr.add_argument("--slide-to-roll", type=float, default=0.0, help="(u_ring - u_roller)/u_mean, default 0")
     tr.add_argument("--per-slice", action="store_true", help="also print the slice table")
     common(tr)
@@ -670,11 +679,14 @@ def _parser() -> argparse.ArgumentParser:
 
     lo = sub.add_parser("losses", help="hydraulic losses by correlation (Liebrecht, SKF), against speed and oil level")
     lo.add_argument("bearing", help="bearing designation or .toml file")
-    lo.add_argument("--material", default="bearing_steel")
-    lo.add_argument("--lubricant", default="FVA3")
-    lo.add_argument("--temperature", default="50 degC")
-    lo.add_argument("--speed", action="append", metavar="N", help='from and to, e.g. --speed "500 rpm" --speed "4000 rpm"')
-    lo.add_argument("--points", type=int, default=8, help="speeds between from and to (default 8)")
+    lo.add_argument("--material", default="bearing_steel", help="roller material (default: bearing_steel)")
+    lo.add_argument("--lubricant", default="FVA3", help="lubricant name or .toml file (default FVA3)")
+    lo.add_argument("--temperature", default="50 degC", help='oil temperature (default "50 degC")')
+    lo.add_argument("--speed", action="append", metavar="N",
+                    help='a shaft speed, e.g. "2000 rpm" (repeatable: a list, as in `kegel cfd sweep`)')
+    lo.add_argument("--speed-range", nargs=2, metavar=("FROM", "TO"),
+                    help='a speed range, e.g. --speed-range "500 rpm" "4000 rpm" (the default) with --points')
+    lo.add_argument("--points", type=int, help="speeds in --speed-range, ends included (default 8)")
     lo.add_argument("--oil-level", action="append", metavar="LEVEL",
                     help="none, half_roller, shaft_center, flooded or a length (repeatable)")
     lo.add_argument("--plot", metavar="PNG", help="write torque vs speed and components to this file")

@@ -310,3 +310,38 @@ def test_progress_line_says_what_its_eta_is_to():
     out = io.StringIO()
     _Progress(stream=out)(st, math.nan)
     assert out.getvalue().rstrip().endswith("ETA ?")
+
+
+def test_progress_line_of_a_steady_run_tells_how_far_the_steady_test_is():
+    """issue 20: "ETA to iteration 2000 30.8 min" on a run that stopped at 262. With a steady
+    test, the line says where the test stands and gives the end time only as the latest end."""
+    import io
+    from types import SimpleNamespace
+
+    from kegel.cfd_cases.foam import LogState
+    from kegel.cfd_cases.run import _Progress
+
+    out = io.StringIO()
+    st = LogState(time=150.0, delta_t=math.nan, courant_max=math.nan, residuals={"Ux": 2e-3}, steps=150)
+    monitor = SimpleNamespace(tol=0.02, status="inner ring -40.7 mN m, torque spread 3.2 x the steady limit")
+    _Progress(stream=out, end="iteration 2000", monitor=monitor)(st, 1800.0)
+    line = out.getvalue().rstrip()
+    assert "torque spread 3.2 x the steady limit" in line
+    assert line.endswith("at the latest to iteration 2000, ETA 30.0 min") and "  ETA to" not in line
+
+
+def test_the_flooded_steady_monitor_states_its_spread(tmp_path, monkeypatch):
+    """The monitor's status is the largest torque spread of the last window over its limit."""
+    import numpy as np
+    from types import SimpleNamespace
+
+    import kegel.cfd_cases.run as run
+
+    n = np.arange(1, 301, dtype=float)
+    series = SimpleNamespace(time=n, moment_total=np.zeros((300, 3)))
+    series.moment_total[:, 2] = -0.04 * (1 + 0.01 * np.sin(n))  # spread 2 % of the mean
+    monkeypatch.setattr(run, "read_forces", lambda case, name: series)
+    mon = run._SteadyMonitor(tmp_path, True, 1.0, 0.02, {})
+    mon.last_check = -1e9
+    assert mon(None) is False
+    assert "torque spread 4.0 x the steady limit" in mon.status and "-40 mN m" in mon.status

@@ -127,7 +127,7 @@ def test_rejects_bad_input(g32208):
 
 def test_cli_losses_table_json_and_plot(tmp_path):
     png = tmp_path / "losses.png"
-    res = run_kegel("losses", "32208", "--temperature", "50 degC", "--speed", "500 rpm", "--speed", "4000 rpm",
+    res = run_kegel("losses", "32208", "--temperature", "50 degC", "--speed-range", "500 rpm", "4000 rpm",
                     "--points", "4", "--oil-level", "half_roller", "--oil-level", "flooded", "--plot", str(png))
     assert res.returncode == 0, res.stderr
     assert "drag" in res.stdout and "flooded" in res.stdout
@@ -238,7 +238,7 @@ def test_speed_reading_rejected():
 # --- `kegel losses`: Liebrecht and SKF side by side ------------------------------------------------
 
 def test_cli_losses_side_by_side_table():
-    res = run_kegel("losses", "32208", "--speed", "2000 rpm", "--speed", "2000 rpm", "--points", "1",
+    res = run_kegel("losses", "32208", "--speed", "2000 rpm",
                     "--oil-level", "flooded", "--oil-level", "shaft_center")
     assert res.returncode == 0, res.stderr
     out = res.stdout
@@ -254,7 +254,7 @@ def test_cli_losses_side_by_side_table():
 
 
 def test_cli_losses_side_by_side_json_options_and_errors(tmp_path):
-    res = run_kegel("losses", "32208", "--speed", "2000 rpm", "--speed", "2000 rpm", "--points", "1",
+    res = run_kegel("losses", "32208", "--speed", "2000 rpm",
                     "--oil-level", "flooded", "--axial-load", "1 kN", "--radial-load", "2 kN",
                     "--skf-edition", "2005", "--format", "json")
     assert res.returncode == 0, res.stderr
