@@ -8,7 +8,8 @@ Codes
 -----
 ``not_converged``
     The point failed its plausibility gates (power, force or moment balance, torque sign): its
-    figures are not an answer (the record keeps them, with the residuals, for diagnosis).
+    figures are not an answer (the record keeps them, with the residuals, for diagnosis); or its
+    solver raised, and it has no figures (the message is the record's ``failure``).
 ``cage_pocket_fallback``
     The free-roller cage solution failed its balances; the cage pockets carry every roller.
 ``mixed_lubrication``
@@ -113,7 +114,10 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
         The friction parameters used (:class:`kegel.FrictionData`), for ``parameters_to_verify``.
     """
     out: list[Warning_] = []
-    if point.get("converged") is False:
+    if point.get("converged") is False and not point.get("solved", True):
+        out.append(Warning_("not_converged", f"point {point.get('index')} has no answer: its solver failed "
+                            "(the failure is in the record)"))
+    elif point.get("converged") is False:
         out.append(Warning_("not_converged", f"point {point.get('index')} failed its plausibility gates "
                             f"({point.get('failure') or 'see the record'}): its figures are not an answer"))
     if scene.fidelity.cage is True and point.get("cage_model") == "pocket":
