@@ -9,7 +9,8 @@ Available: ``"liebrecht"`` (seed paper Eq. 38-40, speeds in 1/min, see :mod:`.li
 ``"skf"`` (the drag moment of the SKF catalogue model, :mod:`.skf`, with V_M digitised from the
 catalogue's diagram; it is one moment of the bearing, which :func:`hydraulic_torques` puts on the
 inner ring). :mod:`.skf` also gives the catalogue's rolling and sliding moments
-(:func:`skf_friction`), an independent check of kegel's contact friction.
+(:func:`skf_friction`), an independent check of kegel's contact friction; :mod:`.aihara` gives
+Aihara's running-torque formula for a pure axial load (NSK, 1987), a second one.
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import math
 from ..geometry import BearingGeometry
 from ..lubricant import LubricantState
 from ..tribology import cage_speed_rad_s as pure_rolling_cage_speed
+from .aihara import AiharaTorque, aihara_running_torque
 from .common import HydraulicTorques, immersed_fraction
 from .liebrecht import (
     LiebrechtInput,
@@ -42,12 +44,14 @@ from .skf import (
 )
 
 __all__ = [
+    "AiharaTorque",
     "CORRELATIONS",
     "HydraulicTorques",
     "LiebrechtInput",
     "SkfBearing",
     "SkfDrag",
     "SkfFriction",
+    "aihara_running_torque",
     "cylinder_drag_coefficient",
     "drag_loss_variable",
     "free_disc_moment_coefficient",
