@@ -9,7 +9,9 @@ come from kegel:
    tables: every measurement is in figures, which could not be read here, so their point arrays
    are empty and the command says so (``kegel/data/validation/README.md`` lists each figure and
    its conditions, ready to be digitised). Each file also records the numbers its text states.
-2. **An independent engineering model**: the SKF catalogue model's rolling + sliding moment
+2. **Independent engineering models**: Aihara's running-torque formula (NSK 1987,
+   :mod:`kegel.correlations.aihara`) where the load is purely axial (Table 1), and the SKF
+   catalogue model's rolling + sliding moment
    (:mod:`kegel.correlations.skf`) at the test conditions of the seed paper's Tables 1-3 (the
    conditions only; the paper's measured results are not used). SKF's model is fitted to SKF's
    own measurements of many bearings; Manjunath et al. (2023, Sec. 5) found it within 5-8 % of
