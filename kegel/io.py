@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import platform
@@ -59,19 +60,27 @@ def atomic_save(path: str | Path, write: Any, suffix: str | None = None) -> Path
 def atomic_write_text(path: str | Path, text: str) -> Path:
     """Write ``text`` to ``path`` through a temporary file in the same folder and a rename,
     so that a reader never sees a half-written file (mode: see :func:`file_mode`)."""
+    with _replacing(path) as fh:
+        fh.write(text)
+    return Path(path)
+
+
+@contextlib.contextmanager
+def _replacing(path: str | Path):
+    """A text file opened beside ``path`` that replaces it, synced, when the block ends; removed
+    on any failure or interrupt (the old ``path`` stays as it was)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = temp_beside(path, ".tmp")
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
+            yield fh
             fh.flush()
             os.fsync(fh.fileno())
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-    return path
 
 
 def atomic_write_json(path: str | Path, data: Any) -> Path:
@@ -84,29 +93,19 @@ def atomic_write_json_records(path: str | Path, header: dict[str, Any], key: str
     one record at a time: a 10^5-point sweep never builds its whole results text in memory
     (``json.dumps`` of it made a string of about 1 GB). Readers see the same JSON as
     :func:`atomic_write_json` would write (indented, NaN refused)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = temp_beside(path, ".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            sentinel = f"@@kegel-records-{os.urandom(6).hex()}@@"
-            head = json.dumps({**header, key: sentinel}, indent=2, allow_nan=False)
-            marker = f'"{key}": "{sentinel}"'
-            cut = head.index(marker)
-            fh.write(head[:cut] + f'"{key}": [')
-            first = True
-            for rec in records:
-                text = json.dumps(rec, indent=2, allow_nan=False).replace("\n", "\n    ")
-                fh.write(("\n    " if first else ",\n    ") + text)
-                first = False
-            fh.write(("\n  ]" if not first else "]") + head[cut + len(marker):] + "\n")
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+    sentinel = f"@@kegel-records-{os.urandom(6).hex()}@@"
+    head = json.dumps({**header, key: sentinel}, indent=2, allow_nan=False)
+    marker = f'"{key}": "{sentinel}"'
+    cut = head.index(marker)
+    with _replacing(path) as fh:
+        fh.write(head[:cut] + f'"{key}": [')
+        first = True
+        for rec in records:
+            text = json.dumps(rec, indent=2, allow_nan=False).replace("\n", "\n    ")
+            fh.write(("\n    " if first else ",\n    ") + text)
+            first = False
+        fh.write(("\n  ]" if not first else "]") + head[cut + len(marker):] + "\n")
+    return Path(path)
 
 
 def provenance() -> dict[str, str]:

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import kegel
+from conftest import scene_text
 import kegel.dynamics as dyn
 from kegel.dynamics import simulate
 from kegel.tribology import load_friction
@@ -40,25 +41,8 @@ def test_pieces_between_outputs_do_not_change_the_answer(monkeypatch):
     np.testing.assert_allclose(pieces.states, whole.states, rtol=1e-9, atol=1e-14)
 
 
-SCENE = """
-[bearing]
-designation = "32216"
-[lubricant]
-name = "FVA3"
-[operating]
-axial_load = "6 kN"
-speed = "2000 rpm"
-temperature = "50 degC"
-[lubrication]
-mode = "minimum_quantity"
-[model]
-fidelity = "fast"
-solution = "dynamic"
-[dynamic]
-duration = "2 s"
-output_interval = "1 s"
-checkpoint_interval = "1 s"
-"""
+SCENE = scene_text(model='solution = "dynamic"\n[dynamic]\nduration = "2 s"\noutput_interval = "1 s"\n'
+                         'checkpoint_interval = "1 s"')
 
 
 def test_ctrl_c_during_the_integration_is_answered_within_a_second(monkeypatch):
