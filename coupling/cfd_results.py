@@ -18,11 +18,26 @@ from typing import Any
 
 from ..errors import KegelInputError
 
-__all__ = ["cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
+__all__ = ["BALANCE_LIMIT", "balance_of", "cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
 
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
 OIL_LEVEL_TOLERANCE_M = 1e-4
+
+#: Largest |sum of the wall torques| / |drive torque| of a CFD result read as settled. In a steady
+#: state the oil's angular momentum is constant and the wall torques sum to zero; the discretisation
+#: leaves -14 % (flooded, tiny mesh) to -4 % (fine), and an oil bath's chaotic flow stores and
+#: releases angular momentum across its averaging window (-17 % and -22 % at 2000 and 4000 rpm on
+#: the tiny mesh). Beyond 25 % the oil is still gaining or losing angular momentum as a whole: the
+#: loss torque of such a run is not the settled loss (docs/cfd.md).
+BALANCE_LIMIT = 0.25
+
+
+def balance_of(data: dict[str, Any]) -> float | None:
+    """The angular-momentum balance of a CFD ``results.json`` (sum of the wall torques relative to
+    the drive torque), or None when the result does not state it."""
+    b = (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque")
+    return None if b is None or not math.isfinite(float(b)) else float(b)
 
 
 def cfd_result_files(path: str | Path) -> list[Path]:
@@ -156,7 +171,9 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
     -------
     dict
         ``status`` ("computed", "interpolated", "missing"), ``loss_torque_at_shaft_Nm`` (None when
-        missing), ``files``, ``meshes``, ``steady`` (all results used steady), ``error_rel`` (the
+        missing), ``files``, ``meshes``, ``steady`` (all results used steady), ``balance`` (the
+        largest |angular-momentum balance| of the results used; None when none states it),
+        ``error_rel`` (the
         stated interpolation error; None when computed or unknown), ``note``, ``wall_time_s``
         (runtime of the CFD results used), ``computed_speeds_rpm``.
     """
@@ -167,7 +184,8 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
 
     def used(idx: list[int]) -> dict[str, Any]:
         ds = [rows[i][2] for i in idx]
-        return {"files": [str(rows[i][1]) for i in idx],
+        bals = [abs(b) for b in map(balance_of, ds) if b is not None]
+        return {"files": [str(rows[i][1]) for i in idx], "balance": max(bals) if bals else None,
                 "meshes": [(d.get("fidelity") or {}).get("mesh") for d in ds],
                 "steady": all(d.get("steady") is not False for d in ds),
                 "wall_time_s": sum(float(d.get("chain_wall_time_s") or d.get("runtime_s") or 0.0) for d in ds)}
@@ -182,7 +200,7 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
     j = next((i for i in range(1, len(speeds)) if speeds[i - 1] < w < speeds[i]), None)
     if j is None:
         return {**base, "status": "missing", "loss_torque_at_shaft_Nm": None, "error_rel": None, "files": [],
-                "meshes": [], "steady": None, "wall_time_s": 0.0,
+                "meshes": [], "steady": None, "balance": None, "wall_time_s": 0.0,
                 "note": "no CFD result at this speed and none on both sides to interpolate from"}
     value = _loglog(w, speeds[j - 1], loss(j - 1), speeds[j], loss(j))
     misses = []

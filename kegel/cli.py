@@ -316,6 +316,15 @@ def _cmd_losses(args: argparse.Namespace) -> int:
                        None if c["angular_momentum_balance"] is None else 100 * c["angular_momentum_balance"],
                        mm(c["liebrecht_total_Nm"]), mm(c["skf_drag_Nm"]),
                        None if c["wall_time_s"] is None else c["wall_time_s"] / 60, c["file"]) for c in cfd_rows])
+        from .coupling.cfd_results import BALANCE_LIMIT
+
+        off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None
+               and abs(c["angular_momentum_balance"]) > BALANCE_LIMIT]
+        for c in off:
+            print(f"  not settled: {c['oil_level']} at {c['speed_rpm']:.0f} rpm, its wall torques sum to "
+                  f"{100 * c['angular_momentum_balance']:+.0f} % of the drive torque (settled: within "
+                  f"{100 * BALANCE_LIMIT:.0f} %): the oil was still gaining or losing angular momentum; "
+                  "read this loss as unconfirmed")
     elif args.cfd:
         print(f"no CFD result of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC under {', '.join(args.cfd)}")
     if plot_path:
@@ -608,11 +617,13 @@ def _print_study(points: list[dict[str, Any]]) -> None:
                     continue
                 mark = {"interpolated": "~", "computed": ""}.get(r.get("status"), "")
                 err = f" +-{100 * r['error_rel']:.0f}%" if r.get("error_rel") else ""
+                if any(w["code"] in ("cfd_unbalanced", "cfd_not_steady") for w in r.get("warnings", ())):
+                    err += " !"
                 cells.append(f"{mark}{r['total_torque_Nm']:.4g} ({1e3 * r['hydraulic_torque_Nm']:.3g}){err}")
             rows.append((p["index"], f"{p['speed_rpm']:.0f}", f"{p['temperature_degC']:g}", case.replace("_", " "),
                          f"{p['friction_torque_Nm']:.4g}", *cells))
     print("\nStudy: total torque at the shaft [N m] (hydraulic loss [N mm]) by lubrication and method; "
-          "~ CFD interpolated (+- its stated error)")
+          "~ CFD interpolated (+- its stated error); ! CFD not settled (see its warning)")
     _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "M_fric [Nm]", *(label[m] for m in methods)), rows)
     if missing:
         print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")

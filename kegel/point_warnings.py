@@ -30,6 +30,10 @@ Codes
     another bearing, or a partial oil level of a horizontal shaft, is an extrapolation.
 ``cfd_not_steady``
     The CFD result used did not reach a steady loss torque.
+``cfd_unbalanced``
+    The CFD result used is not in angular-momentum balance (its wall torques do not sum to zero
+    within ``kegel.coupling.cfd_results.BALANCE_LIMIT`` of the drive torque): the oil had not
+    settled, and its loss is not confirmed.
 ``cfd_interpolated`` / ``cfd_missing``
     A study's CFD loss interpolated between computed speeds (with its error), or not computed.
 """
@@ -42,6 +46,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 from typing import Any, TextIO
+
+from .coupling.cfd_results import BALANCE_LIMIT as CFD_BALANCE_LIMIT
 
 __all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables"]
 
@@ -163,6 +169,11 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
         if hyd.get("steady") is False:
             out.append(Warning_("cfd_not_steady", f"the CFD result {hyd.get('file')} did not reach a steady loss "
                                 "torque"))
+        bal = hyd.get("angular_momentum_balance")
+        if bal is not None and abs(bal) > CFD_BALANCE_LIMIT:
+            out.append(Warning_("cfd_unbalanced", f"the CFD result {hyd.get('file')} is not in angular-momentum "
+                                f"balance: its wall torques sum to {100 * bal:.0f} % of the drive torque (settled: "
+                                f"within {100 * CFD_BALANCE_LIMIT:.0f} %); read its loss as unconfirmed"))
     elif hyd and scene.lubrication.oil_level_m > 0 and scene.fidelity.hydraulic == "correlation":
         w = liebrecht_warning(scene.bearing.designation,
                               scene.lubrication.oil_level_m >= scene.bearing.outer_diameter_m)

@@ -232,7 +232,8 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
         cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
         hyd_torque = cfd["loss_torque_at_shaft_Nm"]
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
-                   "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady")}
+                   "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady"),
+                   "angular_momentum_balance": _balance_of(cfd)}
     w = op.speed_rad_s
     skf = _skf_point(scene, op, state, dist.axial_force_N)
     point = {
@@ -476,7 +477,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         churning = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "inner_ring_and_shaft_Nm": churning, "roller_drag_on_the_bodies_Nm": roller_drag,
-                   "flow_force_law": law.as_dict(), "cfd_point": cfd["point"]}
+                   "flow_force_law": law.as_dict(), "cfd_point": cfd["point"], "steady": cfd.get("steady"),
+                   "angular_momentum_balance": _balance_of(cfd)}
     power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
     by_contact = {c: sum(power[c].values()) / w for c in CONTACTS}
     by_contact["cage"] = st["cage_power_W"] / w
@@ -529,6 +531,12 @@ def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
     if scene.fidelity.hydraulic != "cfd":
         return None
     return read_cfd_results(scene.fidelity.cfd_results, source=scene.source, key="model.cfd_results")
+
+
+def _balance_of(cfd: dict[str, Any]) -> float | None:
+    from .coupling.cfd_results import balance_of
+
+    return balance_of(cfd)
 
 
 def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tuple[dict[str, Any], Path]:

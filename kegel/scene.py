@@ -458,7 +458,7 @@ class Scene:
     def lubrication_label(self) -> str:
         """The lubrication as resolved, e.g. ``"oil bath, flooded"``, ``"minimum quantity"``."""
         if self.study is not None:
-            return "study: " + ", ".join(_case_label(c) for c in self.study.cases)
+            return "study: " + "; ".join(_case_label(c) for c in self.study.cases)
         return _case_label(self.lubrication)
 
     @cached_property

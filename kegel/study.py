@@ -65,6 +65,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
     The minimum-quantity case has no oil bath: one row, method ``none``, hydraulic loss 0.
     """
     from .coupling import cfd_loss_at
+    from .coupling.cfd_results import BALANCE_LIMIT
 
     st = scene.study
     g = scene.geometry
@@ -117,6 +118,12 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                 if c["steady"] is False:
                     warns.append(Warning_("cfd_not_steady", f"a CFD result used for {row['lubrication']} did not "
                                           "reach a steady loss torque"))
+                if c["balance"] is not None and c["balance"] > BALANCE_LIMIT:
+                    warns.append(Warning_("cfd_unbalanced", f"a CFD result used for {row['lubrication']} at "
+                                          f"{point['speed_rpm']:.0f} rpm is not in angular-momentum balance: its "
+                                          f"wall torques sum to {100 * c['balance']:.0f} % of the drive torque "
+                                          f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
+                                          "read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")
             row["total_torque_Nm"] = None if hyd is None else friction + hyd
             row["warnings"] = [x.as_dict() for x in warns]

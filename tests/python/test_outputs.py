@@ -121,6 +121,36 @@ def test_cfd_interpolation_states_its_error():
     assert cfd_loss_at(two, speed_rad_s=3000 * math.pi / 30, **kw)["status"] == "missing"
 
 
+def test_an_unsettled_cfd_result_is_flagged(tmp_path, monkeypatch):
+    """A CFD result whose wall torques do not sum to zero (the oil still gaining or losing angular
+    momentum) is not a settled loss: the study warns (cfd_unbalanced) and marks its cell with '!';
+    within the limit, as every flooded mesh level is, no warning."""
+    from kegel.coupling.cfd_results import BALANCE_LIMIT
+
+    monkeypatch.chdir(tmp_path)
+    for rpm, bal in ((1000.0, 0.81), (2000.0, -0.8 * BALANCE_LIMIT)):
+        _fake_cfd(tmp_path / "cfd", rpm, 0.03 * rpm / 1000)
+        f = next((tmp_path / "cfd").glob(f"case_{rpm:.0f}_*")) / "results.json"
+        data = json.loads(f.read_text())
+        data["angular_momentum_balance"] = {"relative_to_drive_torque": bal}
+        f.write_text(json.dumps(data))
+    kw = dict(bearing="32208", lubricant="FVA3", temperature_K=323.15, oil_level_m=0.08, flooded=True)
+    from kegel.coupling.cfd_results import read_cfd_results
+    runs = read_cfd_results(str(tmp_path / "cfd"))
+    assert cfd_loss_at(runs, speed_rad_s=1000 * math.pi / 30, **kw)["balance"] == pytest.approx(0.81)
+    assert cfd_loss_at(runs, speed_rad_s=1500 * math.pi / 30, **kw)["balance"] == pytest.approx(0.81)
+    (tmp_path / "s.toml").write_text(STUDY.replace('"500 rpm", ', ""))
+    res = run_kegel("run", "s.toml", "--output", "out", cwd=tmp_path)
+    assert res.returncode == 0, res.stderr
+    assert res.stderr.count("[cfd_unbalanced]") == 1 and "81 %" in res.stderr
+    data = json.loads((tmp_path / "out" / "results.json").read_text())
+    flagged = {(p["speed_rpm"], r["lubrication"]) for p in data["points"] for r in p["study"]
+               if any(w["code"] == "cfd_unbalanced" for w in r["warnings"])}
+    assert (1000.0, "flooded") in flagged and (2000.0, "flooded") not in flagged
+    line = next(x for x in res.stdout.splitlines() if " 1000 " in x and "flooded" in x)
+    assert line.rstrip().endswith("!")
+
+
 @pytest.mark.parametrize("extra, key", [
     ('[lubrication]\nmode = "oil_bath"\noil_level = "flooded"\n', "lubrication"),
     ('[study]\nlubrication = ["flooded", "flooded"]\n', "study.lubrication[1]"),
