@@ -4,14 +4,16 @@ reference tiny run (MRF in the cage frame, housing walls at 0.25 T = 4.9 mm):
 
 - frame: no MRF, the same frozen geometry in the inertial frame with the walls' absolute
   velocities (``--frame absolute``);
-- housing wall distance: 2.5 mm and 10 mm instead of 4.9 mm (``--housing-clearance``).
-
-The cage's presence is not varied (the geometry has no cage-less variant); its direct share is
-the cage torque times the cage speed in each run's power balance.
+- housing wall distance: 2.5 mm and 10 mm instead of 4.9 mm (``--housing-clearance``);
+- the cage's presence: the same bearing without its cage (``--no-cage``; its space is oil).
 
 Runs (or, when a case folder exists, resumes and re-reads) each case on 2 cores:
 
     .venv/bin/python benchmarks/cfd_modelling_choices.py
+    .venv/bin/python benchmarks/cfd_modelling_choices.py --only no_cage --np 1
+
+``--only KEY`` runs the named cases and keeps the other rows of the stored JSON as they are
+(each row records its own kegel version and core count).
 
 Output: benchmarks/results/cfd_modelling_choices.json (loss torque, its deviation from the
 reference, the angular-momentum balance, runtime; the command and kegel version).
@@ -27,38 +29,57 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 
-CASES = [
-    ("reference (MRF, housing 0.25 T)", {}, "results/cfd/32208_2000rpm_flooded_50C_tiny"),
-    ("no MRF (inertial frame)", {"frame": "absolute"}, "results/cfd/choices/frame_absolute_tiny"),
-    ("housing walls at 2.5 mm", {"housing_clearance_m": 2.5e-3}, "results/cfd/choices/housing_2.5mm_tiny"),
-    ("housing walls at 10 mm", {"housing_clearance_m": 10e-3}, "results/cfd/choices/housing_10mm_tiny"),
+CASES = [  # key, label, CfdPoint settings, case folder
+    ("reference", "reference (MRF, housing 0.25 T)", {}, "results/cfd/32208_2000rpm_flooded_50C_tiny"),
+    ("frame_absolute", "no MRF (inertial frame)", {"frame": "absolute"}, "results/cfd/choices/frame_absolute_tiny"),
+    ("housing_2.5mm", "housing walls at 2.5 mm", {"housing_clearance_m": 2.5e-3},
+     "results/cfd/choices/housing_2.5mm_tiny"),
+    ("housing_10mm", "housing walls at 10 mm", {"housing_clearance_m": 10e-3}, "results/cfd/choices/housing_10mm_tiny"),
+    ("no_cage", "without the cage", {"cage": False}, "results/cfd/choices/no_cage_tiny"),
 ]
+OUT = HERE / "results" / "cfd_modelling_choices.json"
 
 
-def main() -> int:
+def main(argv: list[str] | None = None) -> int:
+    import argparse
+
     import kegel
     from kegel.cfd_cases.run import CfdPoint, run_case
     from kegel.io import atomic_write_json, provenance
 
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--only", action="append", choices=[c[0] for c in CASES],
+                    help="run only this case (repeatable); the other rows are kept from the stored JSON")
+    ap.add_argument("--np", type=int, default=2, help="MPI processes per case (default 2)")
+    args = ap.parse_args(argv)
+    stored = {r.get("key", r["case"]): r for r in json.loads(OUT.read_text())["rows"]} if OUT.is_file() else {}
+    stored = {next((c[0] for c in CASES if c[1] == k), k): r for k, r in stored.items()}  # rows stored by label
     rows = []
-    for label, extra, folder in CASES:
+    for key, label, extra, folder in CASES:
+        if args.only and key not in args.only:
+            if key in stored:
+                rows.append({**stored[key], "key": key})
+            continue
         p = CfdPoint(bearing="32208", speed_rad_s=2000 * math.pi / 30, temperature_K=323.15, oil_level_m=None,
-                     mesh="tiny", n_procs=2, max_iterations=2000, **extra)
+                     mesh="tiny", n_procs=args.np, max_iterations=2000, **extra)
         case = REPO / folder
         run_case(p, case, progress=False, log=lambda s: print(s, file=sys.stderr))
         data = json.loads((case / "results.json").read_text())
         t = data["torques_Nm"]
-        rows.append({"case": label, "settings": extra, "folder": folder, "cells": data["fidelity"]["cells"],
+        rows.append({"key": key, "case": label, "settings": extra, "folder": folder, "n_procs": args.np,
+                     "kegel_version": kegel.__version__, "cells": data["fidelity"]["cells"],
                      "runtime_s": data["runtime_s"], "iterations": data["iterations"], "steady": data["steady"],
                      "loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
                      "inner_ring_Nm": t["inner_ring"]["total"], "outer_ring_Nm": t["outer_ring"]["total"],
                      "cage_Nm": t["cage"]["total"],
                      "angular_momentum_balance": data["angular_momentum_balance"]["relative_to_drive_torque"]})
+    if not rows or rows[0]["key"] != "reference":
+        raise SystemExit("the reference row is neither stored nor run: run without --only first")
     ref = rows[0]["loss_torque_Nm"]
     for r in rows:
         r["deviation_from_reference"] = r["loss_torque_Nm"] / ref - 1.0
-    atomic_write_json(HERE / "results" / "cfd_modelling_choices.json", {
-        "command": "benchmarks/cfd_modelling_choices.py", "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, tiny",
+    atomic_write_json(OUT, {
+        "command": " ".join(["benchmarks/cfd_modelling_choices.py", *(sys.argv[1:] if argv is None else argv)]), "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, tiny",
         "rows": rows, "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"{'case':<34}{'loss mN m':>10}{'vs ref':>9}{'IR mN m':>9}{'OR mN m':>9}{'cage':>7}{'balance':>9}{'run s':>7}")
     for r in rows:

@@ -92,6 +92,8 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         extra["housing_clearance_m"] = s_m
     if getattr(args, "frame", "cage") != "cage":
         extra["frame"] = args.frame
+    if getattr(args, "no_cage", False):
+        extra["cage"] = False
     return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
                     mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
                     max_iterations=args.max_iterations, max_wall_time_s=wall, **extra)
@@ -100,6 +102,8 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
 def _case_name(point, level_text: str) -> str:
     lvl = level_text.replace(" ", "")
     extra = "" if point.frame == "cage" else f"_{point.frame}"
+    if not point.cage:
+        extra += "_nocage"
     if point.housing_clearance_m is not None:
         extra += f"_s{point.housing_clearance_m * 1e3:g}mm"
     return (f"{point.bearing}_{point.speed_rad_s * 30 / math.pi:.0f}rpm_{lvl}_"
@@ -372,6 +376,9 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--frame", choices=("cage", "absolute"), default="cage",
                         help="frozen-rotor frame: cage (MRF at the cage speed, default) or absolute (no MRF; "
                              "a modelling-choice check)")
+        sp.add_argument("--no-cage", action="store_true",
+                        help="leave the cage out of the geometry (a modelling-choice check: the cage's share "
+                             "of the loss)")
         sp.add_argument("--housing-clearance",
                         help='axial distance from the bearing faces to the housing walls, e.g. "6 mm" '
                              "(default 0.25 T of the bearing)")

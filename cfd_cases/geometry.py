@@ -220,8 +220,11 @@ def _cone_along(occ, cg: CfdGeometry, k: int, small_end, length, radii) -> int:
     return tag
 
 
-def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: int = 1) -> dict[str, str]:
+def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: int = 1,
+               cage: bool = True) -> dict[str, str]:
     """Build the fluid volume, mesh it with tetrahedra at ``level`` and write ASCII msh 2.2.
+
+    ``cage=False`` leaves the cage out (a modelling-choice check): its space is oil.
 
     One thread by default: with two, gmsh's mesh of the same geometry differs from run to run
     (tiny: 71 338 and 71 292 cells for the 32208 in two runs, and a different msh file each
@@ -235,6 +238,7 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
     """
     import gmsh
 
+    with_cage = cage
     if level not in MESH_LEVELS:
         raise ValueError(f"mesh level {level!r}: expected one of {', '.join(MESH_LEVELS)}")
     Dw = cg.bearing.roller_mean_diameter_m
@@ -250,11 +254,13 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
         shaft = occ.addCylinder(0, 0, cg.z_min_m - 1e-3, 0, 0, cg.z_max_m - cg.z_min_m + 2e-3, cg.shaft_radius_m)
         cup = _revolve_section(occ, cg.cup_section)
         cone = _revolve_section(occ, cg.cone_section)
-        shell = _revolve_section(occ, cg.cage_section)
         Z = cg.roller_count
-        pockets = [_cone_along(occ, cg, k, cg.pocket_small_end_m, cg.pocket_length_m, cg.pocket_radii_m)
-                   for k in range(Z)]
-        cage, _ = occ.cut([(3, shell)], [(3, p) for p in pockets])
+        cage: list = []
+        if with_cage:
+            shell = _revolve_section(occ, cg.cage_section)
+            pockets = [_cone_along(occ, cg, k, cg.pocket_small_end_m, cg.pocket_length_m, cg.pocket_radii_m)
+                       for k in range(Z)]
+            cage, _ = occ.cut([(3, shell)], [(3, p) for p in pockets])
         rollers = [_cone_along(occ, cg, k, cg.roller_small_end_m, cg.roller_length_m, cg.roller_radii_m)
                    for k in range(Z)]
         tools = [(3, shaft), (3, cup), (3, cone), *cage, *[(3, r) for r in rollers]]
@@ -263,7 +269,8 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
         if len(fluid) != 1:
             raise RuntimeError(f"the oil space should be one volume, got {len(fluid)}")
         vol = fluid[0][1]
-        patches = _classify_surfaces(cg, [s for d, s in gmsh.model.getBoundary(fluid, oriented=False)])
+        patches = _classify_surfaces(cg, [s for d, s in gmsh.model.getBoundary(fluid, oriented=False)],
+                                     with_cage=with_cage)
         for name, tags in patches.items():
             gmsh.model.addPhysicalGroup(2, tags, name=name)
         gmsh.model.addPhysicalGroup(3, [vol], name="oil")
@@ -297,7 +304,7 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
     return types
 
 
-def _classify_surfaces(cg: CfdGeometry, surfaces: list[int]) -> dict[str, list[int]]:
+def _classify_surfaces(cg: CfdGeometry, surfaces: list[int], *, with_cage: bool = True) -> dict[str, list[int]]:
     """Name each boundary surface of the oil space by the solid it belongs to.
 
     A point on the surface (its parametric centre) is tested against each solid's analytic
@@ -317,7 +324,7 @@ def _classify_surfaces(cg: CfdGeometry, surfaces: list[int]) -> dict[str, list[i
             "inner_ring": _dist_section(cg.cone_section, z, r),
             "cage": min(_dist_section(cg.cage_section, z, r),
                         min(_dist_cone(cg, k, p, cg.pocket_small_end_m, cg.pocket_length_m, cg.pocket_radii_m)
-                            for k in range(g.roller_count))),
+                            for k in range(g.roller_count))) if with_cage else math.inf,
         }
         for k in range(g.roller_count):
             d[roller_name(k)] = _dist_cone(cg, k, p, cg.roller_small_end_m, cg.roller_length_m, cg.roller_radii_m)

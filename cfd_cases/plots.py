@@ -34,6 +34,8 @@ def plot_torque_history(case: str | Path, window: Sequence[float], path: str | P
     fig, ax = plt.subplots(figsize=(7.5, 4.2), constrained_layout=True)
     late = []
     for name, label in (("inner_ring", "inner ring"), ("outer_ring", "outer ring"), ("cage", "cage")):
+        if not (case / "postProcessing" / f"forces_{name}").is_dir():
+            continue  # a case without the cage
         f = read_forces(case, f"forces_{name}")
         m = f.moment_total[:, 2] * 1e3
         ax.plot(f.time, m, label=label, lw=1.2)

@@ -47,7 +47,7 @@ import numpy as np
 
 from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
                    run_utility, set_controldict_value, time_dirs, write_field_values)
-from .forces import read_forces
+from .forces import ForceSeries, read_forces
 from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
 from .steady import SteadyTest, steady_drift
@@ -85,6 +85,9 @@ class CfdPoint:
     # MRF, the same frozen geometry in the inertial frame with the walls' absolute velocities (a
     # modelling-choice check: the two frozen-rotor readings bracket the effect of the frame)
     frame: str = "cage"
+    # False: the same bearing without its cage (a modelling-choice check: how much of the loss the
+    # cage's presence makes; the cage's torque is then zero and the rollers keep their orbit)
+    cage: bool = True
     end_time_s: float | None = None        # oil bath: simulated time limit (default: 20 shaft revolutions)
     max_iterations: int = 2000            # flooded: SIMPLE iteration limit
     # Relative tolerance of the steady test (see _SteadyMonitor); 0 never stops on it (the run
@@ -104,6 +107,8 @@ class CfdPoint:
         return self.oil_level_m is None
 
     def validate(self) -> None:
+        if not isinstance(self.cage, bool):
+            raise ValueError(f"cage = {self.cage!r}: expected true or false")
         if self.frame not in FRAMES:
             raise ValueError(f"frame = {self.frame!r}: expected one of {', '.join(FRAMES)}")
         if self.housing_clearance_m is not None and not (math.isfinite(self.housing_clearance_m)
@@ -152,9 +157,9 @@ def roller_wall_rotation(cg: CfdGeometry, k: int, omega_c: float, omega_s: float
             "roller_axis": a}
 
 
-def _bodies(cg: CfdGeometry) -> list[dict[str, Any]]:
+def _bodies(cg: CfdGeometry, cage: bool = True) -> list[dict[str, Any]]:
     bodies = [{"name": n, "patches": [n], "origin": np.zeros(3)}
-              for n in ("inner_ring", "outer_ring", "cage", "shaft", "housing")]
+              for n in ("inner_ring", "outer_ring", "cage", "shaft", "housing") if cage or n != "cage"]
     for k in range(cg.roller_count):
         c, _ = cg.roller_centre_and_axis(k)
         bodies.append({"name": roller_name(k), "patches": [roller_name(k)], "origin": c})
@@ -269,7 +274,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     kin = kinematics(g, point.speed_rad_s)
     rollers = [roller_wall_rotation(cg, k, kin["cage_rad_s"], kin["roller_spin_rad_s"])
                for k in range(cg.roller_count)]
-    patch_names = ["inner_ring", "shaft", "outer_ring", "housing", "cage", *[r["name"] for r in rollers]]
+    patch_names = ["inner_ring", "shaft", "outer_ring", "housing", *(["cage"] if point.cage else []),
+                   *[r["name"] for r in rollers]]
     # pressure reference: in the side chamber at the top (air in an oil bath)
     r_mid = 0.5 * (cg.shaft_radius_m + cg.housing_radius_m)
     p_ref = np.array([0.0, r_mid, 0.5 * cg.z_min_m])
@@ -290,7 +296,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
                   "max_co": point.max_courant, "max_alpha_co": point.max_interface_courant,
                   "force_sample_steps": point.force_sample_steps}
     params.update({
-        "patch_names": patch_names, "rollers": rollers, "bodies": _bodies(cg),
+        "patch_names": patch_names, "rollers": rollers, "bodies": _bodies(cg, point.cage),
         "inner_omega_rad_s": omega_i, "cage_omega_rad_s": kin["cage_rad_s"],
         "density_kg_m3": lub.density_kg_m3, "kinematic_viscosity_m2_s": lub.kinematic_viscosity_m2_s,
         "p_ref_point": p_ref, "n_procs": point.n_procs,
@@ -299,13 +305,14 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     tmp = case_dir.with_name(case_dir.name + ".preparing")
     render_case(template, tmp, params, overwrite=True)
     t0 = time.monotonic()
-    log(f"cfd: meshing {bearing.designation} at level '{point.mesh}' (gmsh)")
-    types = build_mesh(cg, point.mesh, tmp / "bearing.msh")
+    log(f"cfd: meshing {bearing.designation} at level '{point.mesh}' (gmsh)"
+        + ("" if point.cage else ", without the cage"))
+    types = build_mesh(cg, point.mesh, tmp / "bearing.msh", cage=point.cage)
     gmsh_to_foam(tmp, tmp / "bearing.msh", types)
     (tmp / "bearing.msh").unlink()
     quality = check_mesh(tmp)
     mesh_s = time.monotonic() - t0
-    _write_wall_velocities(tmp, kin, rollers, kin["cage_rad_s"] if point.frame == "cage" else 0.0)
+    _write_wall_velocities(tmp, kin, rollers, kin["cage_rad_s"] if point.frame == "cage" else 0.0, cage=point.cage)
     log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
         f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
     initial = None
@@ -414,7 +421,7 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
 
 
 def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]],
-                           frame_rad_s: float) -> None:
+                           frame_rad_s: float, *, cage: bool = True) -> None:
     """Wall velocities of every patch at its face centres (see 0/U) for the MRF frame turning
     at ``frame_rad_s`` (0: no MRF), and the initial oil velocity; keeps the cell centres for the
     oil pictures."""
@@ -431,6 +438,8 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
         "outer_ring": (np.zeros(3), np.zeros(3)), "housing": (np.zeros(3), np.zeros(3)),
         "cage": (omega_c * ez, np.zeros(3)),
     }
+    if not cage:
+        del motions["cage"]
     for r in rollers:
         motions[r["name"]] = (r["omega"] * r["axis"], r["origin"])
     folder = case / "0" / "wallVelocity"
@@ -581,7 +590,7 @@ class _SteadyMonitor:
         return True
 
     def _flooded(self) -> bool:
-        series = {b: read_forces(self.case, f"forces_{b}") for b in self.BODIES}
+        series = {b: _forces(self.case, b) for b in self.BODIES}
         t = series["inner_ring"].time
         if len(t) == 0:
             return False
@@ -604,6 +613,16 @@ class _SteadyMonitor:
         return False
 
 
+def _forces(case: Path, name: str) -> ForceSeries:
+    """The force history of body ``name``; a body the case does not have (the cage of a case
+    without it) has none: zero forces at the inner ring's times."""
+    if name == "cage" and not (case / "postProcessing" / "forces_cage").is_dir():
+        ref = read_forces(case, "forces_inner_ring")
+        z = np.zeros_like(ref.force_total)
+        return ForceSeries(ref.time, z, z, z, z, z, z)
+    return read_forces(case, name if name.startswith("forces_") else f"forces_{name}")
+
+
 def _turning_walls(kin: dict[str, float]) -> dict[str, float]:
     """The walls that turn about the bearing axis, and their speeds (rad/s)."""
     return {"inner_ring": kin["inner_ring_rad_s"], "shaft": kin["inner_ring_rad_s"], "cage": kin["cage_rad_s"]}
@@ -624,7 +643,7 @@ def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
     t = read_forces(case, "forces_inner_ring").time
     power = np.zeros_like(t)
     for name, w in _turning_walls(kin).items():
-        f = read_forces(case, f"forces_{name}")
+        f = _forces(case, name)
         power -= w * np.interp(t, f.time, f.moment_total[:, 2])
     for r in meta["rollers"]:
         f = read_forces(case, f"forces_{r['name']}")
@@ -694,7 +713,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            **({} if restart is None else {"restart_state_time_s": restart}),
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
-           "angular_momentum_balance": _balance(result.torques_Nm),
+           "angular_momentum_balance": _balance(result.torques_Nm, None if point.flooded else
+                                                fluid_gravity_torque(case, meta, result.window_s, point.n_procs)),
            **({} if point.flooded else {"loss_torque_drift": _drift_json(
                case, meta, window, until=monitor.window[1] if monitor.window is not None else None)}),
            "mesh_quality": meta["mesh"], "sign_convention": "moments about +z (bearing axis) acting "
@@ -730,13 +750,59 @@ def _restart_state(case: Path, n_procs: int, stop_s: float) -> float | None:
     return float(found.name)
 
 
-def _balance(t: dict[str, dict[str, float]]) -> dict[str, float]:
-    """Sum of the axial torques on all walls. In a steady state it must vanish (the oil's angular
-    momentum is constant); with gravity (oil bath) the weight's torque joins it."""
+def _balance(t: dict[str, dict[str, float]], gravity: dict[str, Any] | None = None) -> dict[str, Any]:
+    """The angular-momentum balance about the bearing axis. In a steady state the oil's angular
+    momentum is constant, so the torques the walls take from the oil sum to the moment of the
+    fluid's weight (zero without gravity, flooded; in an oil bath the flow holds the oil up on one
+    side: 32208, 500 rpm, tiny mesh, its centre of mass 5-6 mm off the axis, +2 mN m, as large as
+    the drive torque). ``relative_to_drive_torque`` is (sum of wall torques - weight's moment) /
+    |drive torque|."""
     total = sum(t[k]["total"] for k in ("inner_ring", "shaft", "outer_ring", "housing", "cage",
                                         "rollers_about_bearing_axis"))
     drive = abs(t["inner_ring"]["total"] + t["shaft"]["total"])
-    return {"sum_of_wall_torques_Nm": total, "relative_to_drive_torque": total / drive if drive else float("nan")}
+    weight = 0.0 if gravity is None else gravity["torque_Nm"]
+    out: dict[str, Any] = {"sum_of_wall_torques_Nm": total}
+    if gravity is not None:
+        out["weight_moment_on_fluid_Nm"] = weight
+        out["weight_moment_states_s"] = gravity["states_s"]
+    out["relative_to_drive_torque"] = (total - weight) / drive if drive else float("nan")
+    return out
+
+
+def fluid_gravity_torque(case: Path, meta: dict[str, Any], window: tuple[float, float], n_procs: int) -> dict[str, Any]:
+    """The moment of the fluid's weight about the bearing axis (oil and air, SI), the mean over
+    the written states in the averaging ``window`` (fields are written every shaft revolution;
+    with none inside it, the last one before its end).
+
+    Returns ``{"torque_Nm": ..., "states_s": [...]}``; ``torque_Nm`` is NaN when no state is
+    written (the balance then says so instead of passing)."""
+    src = case / "processor0" if n_procs > 1 and (case / "processor0").is_dir() else case
+    written = [d for d in time_dirs(src) if float(d.name) > 0.0 and (d / "alpha.oil").is_file()]
+    inside = [d for d in written if window[0] <= float(d.name) <= window[1] * (1 + 1e-9)]
+    if not inside:
+        last = last_write_at_or_before(written, window[1])
+        inside = [last] if last is not None else []
+    if not inside:
+        return {"torque_Nm": float("nan"), "states_s": []}
+    volumes = case / "cell_volumes.npy"
+    if not volumes.is_file():
+        run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
+        np.save(volumes, read_field(case / "0" / "V"))
+        (case / "0" / "V").unlink(missing_ok=True)
+    V = np.load(volumes)
+    C = np.load(case / "cell_centres.npy")
+    g_text = (case / "constant" / "g").read_text()
+    g = np.array(g_text[g_text.index("(", g_text.index("value")) + 1:g_text.index(")", g_text.index("value"))].split(),
+                 dtype=float)
+    rho_oil = float(meta["lubricant"]["density_kg_m3"])
+    torques = []
+    for d in inside:
+        if not (case / d.name / "alpha.oil").is_file():
+            run_utility(case, "reconstructPar", "-time", d.name, log_name="reconstructPar.weight")
+        alpha = np.clip(read_field(case / d.name / "alpha.oil"), 0.0, 1.0)
+        m = (alpha * rho_oil + (1.0 - alpha) * AIR_DENSITY_KG_M3) * V
+        torques.append(float(np.sum(m * (C[:, 0] * g[1] - C[:, 1] * g[0]))))
+    return {"torque_Nm": float(np.mean(torques)), "states_s": [float(d.name) for d in inside]}
 
 
 def _drift_json(case: Path, meta: dict, window_s: float, until: float | None = None) -> dict[str, Any]:
@@ -786,7 +852,7 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
     torques = {}
     power = 0.0
     for name in ("inner_ring", "outer_ring", "cage", "shaft", "housing"):
-        f = read_forces(case, f"forces_{name}")
+        f = _forces(case, name)
         mz = {"total": float(mean(f.moment_total[:, 2], f.time)),
               "pressure": float(mean(f.moment_pressure[:, 2], f.time)),
               "viscous": float(mean(f.moment_viscous[:, 2], f.time))}
@@ -814,7 +880,7 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
                         "power_W": -p_k})
     torques["rollers_about_bearing_axis"] = {"total": float(sum(r["moment_about_bearing_axis_Nm"] for r in rollers))}
     torques["rollers_spin_sum"] = spin_sum
-    f_cage = read_forces(case, "forces_cage")
+    f_cage = _forces(case, "cage")
     cage = {"force_N": mean(f_cage.force_total, f_cage.time).tolist(),
             "moment_Nm": mean(f_cage.moment_total, f_cage.time).tolist()}
     volume = {}

@@ -321,8 +321,8 @@ def _cmd_losses(args: argparse.Namespace) -> int:
         off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None
                and abs(c["angular_momentum_balance"]) > BALANCE_LIMIT]
         for c in off:
-            print(f"  not settled: {c['oil_level']} at {c['speed_rpm']:.0f} rpm, its wall torques sum to "
-                  f"{100 * c['angular_momentum_balance']:+.0f} % of the drive torque (settled: within "
+            print(f"  not settled: {c['oil_level']} at {c['speed_rpm']:.0f} rpm, its angular-momentum balance "
+                  f"misses by {100 * c['angular_momentum_balance']:+.0f} % of the drive torque (settled: within "
                   f"{100 * BALANCE_LIMIT:.0f} %): the oil was still gaining or losing angular momentum; "
                   "read this loss as unconfirmed")
     elif args.cfd:
@@ -341,7 +341,7 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
 
     from .correlations import hydraulic_torques
     from .correlations.skf import skf_drag_moment
-    from .coupling.cfd_results import TEMPERATURE_TOLERANCE_K, read_cfd_results
+    from .coupling.cfd_results import TEMPERATURE_TOLERANCE_K, balance_of, read_cfd_results
 
     out = []
     for path in paths:
@@ -369,7 +369,7 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
                     except (OSError, ValueError):
                         mesh_s = 0.0
                 wall = float(data["runtime_s"]) + mesh_s
-            bal = (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque")
+            bal = balance_of(data)
             out.append({"file": str(f), "oil_level": name, "oil_level_m": None if flooded else h,
                         "speed_rpm": w * 30 / math.pi, "mesh": data["fidelity"].get("mesh"),
                         "cells": data["fidelity"].get("cells"), "loss_torque_Nm": data["loss_torque_at_shaft_Nm"],

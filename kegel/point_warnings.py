@@ -172,7 +172,7 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
         bal = hyd.get("angular_momentum_balance")
         if bal is not None and abs(bal) > CFD_BALANCE_LIMIT:
             out.append(Warning_("cfd_unbalanced", f"the CFD result {hyd.get('file')} is not in angular-momentum "
-                                f"balance: its wall torques sum to {100 * bal:.0f} % of the drive torque (settled: "
+                                f"balance: it misses by {100 * bal:.0f} % of the drive torque (settled: "
                                 f"within {100 * CFD_BALANCE_LIMIT:.0f} %); read its loss as unconfirmed"))
     elif hyd and scene.lubrication.oil_level_m > 0 and scene.fidelity.hydraulic == "correlation":
         w = liebrecht_warning(scene.bearing.designation,

@@ -120,8 +120,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                                           "reach a steady loss torque"))
                 if c["balance"] is not None and c["balance"] > BALANCE_LIMIT:
                     warns.append(Warning_("cfd_unbalanced", f"a CFD result used for {row['lubrication']} at "
-                                          f"{point['speed_rpm']:.0f} rpm is not in angular-momentum balance: its "
-                                          f"wall torques sum to {100 * c['balance']:.0f} % of the drive torque "
+                                          f"{point['speed_rpm']:.0f} rpm is not in angular-momentum balance: it "
+                                          f"misses by {100 * c['balance']:.0f} % of the drive torque "
                                           f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
                                           "read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")

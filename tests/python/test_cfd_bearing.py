@@ -156,6 +156,41 @@ def test_absolute_frame_case_has_no_mrf_and_absolute_wall_velocities(tmp_path):
     assert np.all(ratio <= 1.0 + 1e-9) and np.median(ratio) == pytest.approx(1.0, abs=1e-3)
 
 
+@pytest.mark.openfoam
+def test_a_case_without_the_cage_has_no_cage_patch_and_zero_cage_forces(tmp_path):
+    """--no-cage (a modelling-choice check): the mesh has every patch but the cage, its space is
+    oil (more cells than the reference's walls leave), and the post-processing reads the missing
+    cage as zero forces instead of failing."""
+    from kegel.cfd_cases.foam import read_boundary_geometry
+    from kegel.cfd_cases.run import _forces, prepare_case
+
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, cage=False,
+                 n_procs=1)
+    case = prepare_case(p, tmp_path / "nocage", log=lambda s: None)
+    patches = set(read_boundary_geometry(case))
+    assert "cage" not in patches and {"inner_ring", "outer_ring", "shaft", "housing", roller_name(0)} <= patches
+    assert not (case / "0" / "wallVelocity" / "cage").exists()
+    assert "forces_cage" not in (case / "system" / "controlDict").read_text()
+    assert json.loads((case / "kegel-case.json").read_text())["point"]["cage"] is False
+    d = case / "postProcessing" / "forces_inner_ring" / "0"
+    d.mkdir(parents=True)
+    row = "\t".join(["1"] + ["(1 2 3)"] * 3)
+    for f in ("force.dat", "moment.dat"):
+        (d / f).write_text(f"# Time total pressure viscous\n{row}\n")
+    cage = _forces(case, "cage")
+    assert cage.time.tolist() == [1.0] and not cage.moment_total.any() and not cage.force_total.any()
+
+
+def test_no_cage_option_reaches_the_point_and_the_case_name():
+    from kegel.cfd_cases.cli import _case_name
+
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, cage=False)
+    assert _case_name(p, "flooded").endswith("_tiny_nocage")
+    with pytest.raises(ValueError, match="cage"):
+        CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, cage="no").validate()
+    assert "--no-cage" in run_kegel("cfd", "run", "--help").stdout
+
+
 def test_cfd_point_steady_tolerance_is_a_fraction():
     ok = CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=0.04,
                   steady_tolerance=0.0)
@@ -256,6 +291,11 @@ def test_tiny_oil_bath_case_runs_with_conserved_oil(tiny_bath):
     vol = np.array(data["liquid_volume"]["volume_m3"])
     assert len(vol) > 10 and _finite(vol)
     assert abs(vol[-1] - vol[0]) / vol[0] < 1e-3  # MRF and closed walls keep the oil
+    # the balance counts the moment of the oil's weight, from the state written at the end
+    bal = data["angular_momentum_balance"]
+    assert bal["weight_moment_states_s"] == [pytest.approx(3e-4)] and math.isfinite(bal["weight_moment_on_fluid_Nm"])
+    # the oil still lies level: its weight's moment is that of a centre of mass within 0.5 mm of the axis
+    assert abs(bal["weight_moment_on_fluid_Nm"]) < 0.034 * 9.81 * 0.5e-3
     for name in ("torque_history", "oil_distribution"):
         assert (case / f"{name}.png").stat().st_size > 10_000
     assert data["liebrecht_Nm"]["total_Nm"] > 0

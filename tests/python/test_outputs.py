@@ -151,6 +151,26 @@ def test_an_unsettled_cfd_result_is_flagged(tmp_path, monkeypatch):
     assert line.rstrip().endswith("!")
 
 
+def test_the_angular_momentum_balance_counts_the_weight_of_an_oil_bath():
+    """In an oil bath the walls' torques sum to the moment of the oil's weight, not to zero (the
+    flow holds the oil up on one side): the balance subtracts it; an oil-bath result that does not
+    state it has no balance (never a false alarm), a flooded one needs none."""
+    from kegel.cfd_cases.run import _balance
+    from kegel.coupling.cfd_results import balance_of
+
+    t = {k: {"total": v} for k, v in (("inner_ring", -1.5e-3), ("shaft", -0.5e-3), ("outer_ring", 2.5e-3),
+                                        ("housing", 2.7e-3), ("cage", -1.0e-3), ("rollers_about_bearing_axis", -0.3e-3))}
+    b = _balance(t, {"torque_Nm": 1.8e-3, "states_s": [0.24]})
+    assert b["sum_of_wall_torques_Nm"] == pytest.approx(1.9e-3)
+    assert b["relative_to_drive_torque"] == pytest.approx((1.9e-3 - 1.8e-3) / 2.0e-3)
+    assert _balance(t)["relative_to_drive_torque"] == pytest.approx(1.9e-3 / 2.0e-3)
+    bath = {"point": {"oil_level_m": 0.04}, "angular_momentum_balance": b}
+    assert balance_of(bath) == pytest.approx(0.05)
+    old = {"point": {"oil_level_m": 0.04}, "angular_momentum_balance": _balance(t)}
+    assert balance_of(old) is None
+    assert balance_of({"point": {"oil_level_m": None}, "angular_momentum_balance": _balance(t)}) == pytest.approx(0.95)
+
+
 @pytest.mark.parametrize("extra, key", [
     ('[lubrication]\nmode = "oil_bath"\noil_level = "flooded"\n', "lubrication"),
     ('[study]\nlubrication = ["flooded", "flooded"]\n', "study.lubrication[1]"),
