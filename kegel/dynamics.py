@@ -330,16 +330,38 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         Speed of the quasi-static initial state (default: the profile's speed at t = 0; with 0 the
         bodies start at rest).
     """
+    # the limits of a dynamic scene (kegel.scene), the same for the Python API
+    from .lubricant import lubricant_state
+    from .scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, max_speed_rpm,
+                        static_equivalent_load_N)
+
     if (axial_N is None) == (axial_offset_m is None):
         raise KegelInputError("<argument>", "axial_N", axial_N, "exactly one of axial_N and axial_offset_m")
-    if not duration_s > 0:
-        raise KegelInputError("<argument>", "duration_s", duration_s, "a time > 0")
-    if not (0 < output_interval_s <= duration_s):
-        raise KegelInputError("<argument>", "output_interval_s", output_interval_s, f"in (0, {duration_s}]")
+    if not 0 < duration_s <= MAX_DYNAMIC_DURATION_S:
+        raise KegelInputError("<argument>", "duration_s", duration_s,
+                              f"a time > 0 and at most {MAX_DYNAMIC_DURATION_S:g} s (time steps are microseconds)")
+    if not (MIN_OUTPUT_INTERVAL_S <= output_interval_s <= duration_s):
+        raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
+                              f"in [{MIN_OUTPUT_INTERVAL_S:g}, {duration_s:g}] s")
+    if duration_s / output_interval_s > MAX_DYNAMIC_OUTPUTS:
+        raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
+                              f"at most {MAX_DYNAMIC_OUTPUTS} outputs (here {duration_s / output_interval_s:.3g})")
+    lubricant_state(lubricant, temperature_K, key="temperature_K")
     prof = np.asarray(speed_profile, dtype=float)
     if prof.ndim != 2 or prof.shape[1] != 2 or not np.all(np.diff(prof[:, 0]) > 0) or not np.isfinite(prof).all():
         raise KegelInputError("<argument>", "speed_profile", speed_profile,
                               "(time_s, speed_rad_s) pairs with increasing times")
+    n_max = max_speed_rpm(bearing)
+    if not np.all(np.abs(prof[:, 1]) * 30.0 / math.pi <= n_max):
+        raise KegelInputError("<argument>", "speed_profile", speed_profile,
+                              f"speeds with |n| <= {n_max:.0f} rpm (n d_m <= 1e6 rpm mm for bearing {bearing.designation})")
+    for fa, fr in ([(axial_N, radial_N)] if axial_N is not None else []) + [
+            (row[1], row[2]) for row in np.asarray(load_profile, dtype=float).reshape(-1, 3)]:
+        if math.isfinite(fa) and math.isfinite(fr) and fa > 0 and fr >= 0 \
+                and static_equivalent_load_N(g, fa, fr) > bearing.C0r_N:
+            raise KegelInputError("<argument>", "axial_N" if not len(load_profile) else "load_profile", (fa, fr),
+                                  f"loads whose ISO 76 static equivalent load stays within C0r = "
+                                  f"{bearing.C0r_N / 1e3:g} kN")
     w_start = float(np.interp(0.0, prof[:, 0], prof[:, 1])) if initial_speed_rad_s is None else initial_speed_rad_s
     loads = np.asarray(load_profile, dtype=float).reshape(-1, 3) if len(load_profile) else np.zeros((0, 3))
     if len(loads) and (not np.all(np.diff(loads[:, 0]) > 0) or not np.isfinite(loads).all()

@@ -6,6 +6,7 @@ import contextlib
 import json
 import os
 import platform
+import shutil
 import sys
 import tempfile
 from datetime import datetime, timezone
@@ -145,10 +146,12 @@ class RunFolder:
     LOCK = ".kegel-run.lock"
     STREAM = "points.jsonl"
 
-    def __init__(self, path: str | Path, key: dict[str, Any], summary_files: tuple[str, ...]) -> None:
+    def __init__(self, path: str | Path, key: dict[str, Any], summary_files: tuple[str, ...],
+                 summary_dirs: tuple[str, ...] = ()) -> None:
         self.path = Path(path)
         self.key = key
         self.summary_files = summary_files
+        self.summary_dirs = summary_dirs  # folders of per-point files (a dynamic run's dynamic/)
         self.run_id = os.urandom(8).hex()
         self._lock_fd: int | None = None
         self._stream = None
@@ -182,10 +185,8 @@ class RunFolder:
         os.write(self._lock_fd, json.dumps({"pid": os.getpid(), "run_id": self.run_id}).encode())
         os.fsync(self._lock_fd)
         stream = self.path / self.STREAM
-        done: dict[int, dict[str, Any]] = {}
-        if stream.is_file():
-            done = _read_stream(stream, self.key)
-        if not done:
+        done = _read_stream(stream, self.key) if stream.is_file() else None
+        if done is None:  # no interrupted run of this key: a new run
             self.replaced = _previous_run(self.path / "results.json")
             if self.replaced:
                 # an explicit policy, never a silent overwrite: say whose results are replaced
@@ -193,13 +194,18 @@ class RunFolder:
                       "(choose another --output to keep them)", file=sys.stderr)
             for name in (*self.summary_files, self.STREAM):
                 (self.path / name).unlink(missing_ok=True)
+            for name in self.summary_dirs:
+                if (self.path / name).is_dir() and not (self.path / name).is_symlink():
+                    shutil.rmtree(self.path / name)
             for pattern in (".*.tmp", ".*.png"):  # temporary files of an interrupted write
                 for tmp in self.path.glob(pattern):
                     tmp.unlink(missing_ok=True)
             self._stream = open(stream, "w", encoding="utf-8")
             self._write_line({"kegel_run": self.key, "run_id": self.run_id})
-        else:
-            self._stream = open(stream, "a", encoding="utf-8")
+            return {}
+        # an interrupted run of this key (perhaps before its first point finished: its dynamic
+        # checkpoint is kept): resume
+        self._stream = open(stream, "a", encoding="utf-8")
         return done
 
     def _write_line(self, obj: dict[str, Any]) -> None:
@@ -277,20 +283,21 @@ def _alive(pid: int) -> bool:
     return True
 
 
-def _read_stream(stream: Path, key: dict[str, Any]) -> dict[int, dict[str, Any]]:
+def _read_stream(stream: Path, key: dict[str, Any]) -> dict[int, dict[str, Any]] | None:
     """Finished points of a stream written with the same key (an unreadable last line, cut by
-    an interrupt, is dropped); empty for another key or an unreadable header."""
+    an interrupt, is dropped; empty when none finished); None for another key or an unreadable
+    header."""
     done: dict[int, dict[str, Any]] = {}
     try:
         lines = stream.read_text(encoding="utf-8").splitlines()
     except (OSError, UnicodeDecodeError):
-        return {}
+        return None
     try:
         header = json.loads(lines[0]) if lines else {}
     except json.JSONDecodeError:
-        return {}
+        return None
     if header.get("kegel_run") != json.loads(json.dumps(key)):
-        return {}
+        return None
     for line in lines[1:]:
         try:
             p = json.loads(line)["point"]

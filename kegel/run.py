@@ -33,7 +33,7 @@ from .dynamics import SimulationDiverged
 from .point_warnings import Warning_, WarningLog, point_warnings
 from .quasi_static import bearing_friction, bearing_model
 from .study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_rows
-from .scene import Fidelity, Scene
+from .scene import Fidelity, Scene, static_equivalent_load_N
 from .tribology import cage_speed_rad_s, load_friction
 from . import _core
 
@@ -194,9 +194,13 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path):
     from .errors import KegelInputError
     from .io import OutputLocked, RunFolder
 
-    key = {"scene": scene.resolved, "fidelity": fid.as_dict(), "kegel_version": __version__,
+    # the scene as written, less what does not change a result (the thread count)
+    written = json.loads(json.dumps(scene.resolved))
+    if isinstance(written.get("dynamic"), dict):
+        written["dynamic"].pop("threads", None)
+    key = {"scene": written, "fidelity": fid.as_dict(), "kegel_version": __version__,
            "core_version": _core.core_version()}
-    folder = RunFolder(out, key, SUMMARY_FILES)
+    folder = RunFolder(out, key, SUMMARY_FILES, ("dynamic",))
     try:
         done = folder.open()
     except OutputLocked as exc:
@@ -236,6 +240,17 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
                    "angular_momentum_balance": _balance_of(cfd)}
     w = op.speed_rad_s
     skf = _skf_point(scene, op, state, dist.axial_force_N)
+    converged, failure = fr.converged, fr.failure
+    if op.axial_load_N is None and converged:
+        # a displacement-controlled point: its axial force is known only now, so its static
+        # equivalent load is checked here (a force-controlled one was checked with the scene)
+        p0 = static_equivalent_load_N(g, dist.axial_force_N, op.radial_load_N)
+        if p0 > scene.bearing.C0r_N:
+            converged = False
+            failure = (f"the static equivalent load P0 = {p0 / 1e3:.4g} kN (ISO 76; Fa = {dist.axial_force_N / 1e3:.4g} kN "
+                       f"at the axial offset, Fr = {op.radial_load_N / 1e3:.4g} kN) exceeds C0r = "
+                       f"{scene.bearing.C0r_N / 1e3:g} kN of bearing {scene.bearing.designation}: the raceways deform "
+                       "permanently and the elastic contact models do not hold")
     point = {
         **op.as_dict(),
         "friction_torque_Nm": fr.drive_torque_Nm,
@@ -264,8 +279,8 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
         "axial_force_N": dist.axial_force_N,
         "ring_displacement_m": dist.ring_displacement_m.tolist(),
         "load_residual": dist.residual,
-        "converged": fr.converged,
-        "failure": fr.failure,
+        "converged": converged,
+        "failure": failure,
         "start": fr.start,
         "runtime_s": fr.runtime_s,
         "lubricant_state": state.as_dict(),
@@ -317,21 +332,11 @@ def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]],
 
 
 #: The swept quantity of a plot's x axis: record key, axis label, scale.
-X_AXES = {
-    "speed": ("speed_rpm", "shaft speed [rpm]", 1.0),
-    "radial_load": ("radial_load_N", "radial load [kN]", 1e-3),
-    "axial_load": ("axial_load_N", "axial load [kN]", 1e-3),
-    "axial_offset": ("axial_offset_m", "axial offset [um]", 1e6),
-    "temperature": ("temperature_degC", "temperature [degC]", 1.0),
-    None: ("index", "operating point", 1.0),
-}
-
-
 def _study_plot_meta(scene: Scene) -> dict[str, Any]:
-    sweep = next((s for s in scene.swept if s != "temperature"), None) or (scene.swept[0] if scene.swept else None)
-    xk, xl, xs = X_AXES[sweep]
+    """The study plot's metadata: title, the swept quantities (x axis first, as the run plots
+    choose it: see :mod:`kegel.plots`) and the lubrication cases in the scene's order."""
     return {"title": f"{scene.title} ({scene.bearing.designation}, {scene.lubricant.name}, fidelity "
-                     f"{scene.fidelity.name})", "x_key": xk, "x_label": xl, "x_scale": xs,
+                     f"{scene.fidelity.name})", "swept": list(reversed(scene.swept)),
             "cases": ["minimum_quantity" if c.mode == "minimum_quantity" else c.oil_level_as_written
                       for c in scene.study.cases]}
 

@@ -37,6 +37,7 @@ __all__ = [
     "axial_roller_loads",
     "cage_speed_rad_s",
     "evaluate_raceway_contact",
+    "MAX_CONTACT_PRESSURE_PA",
 ]
 
 
@@ -190,6 +191,11 @@ _RESULT_FIELDS = (
 )
 
 
+#: The largest Hertz pressure kegel accepts at a roller/raceway contact: ISO 76's static limit for
+#: roller bearings (4000 MPa, the basis of C0r); beyond it the steel yields and the elastic models fail.
+MAX_CONTACT_PRESSURE_PA = 4.0e9
+
+
 def evaluate_raceway_contact(
     g: BearingGeometry,
     bearing: BearingData,
@@ -240,6 +246,13 @@ def evaluate_raceway_contact(
         raise KegelInputError("<argument>", "load", load_N, "a positive contact load in N")
     if not (math.isfinite(slide_to_roll) and abs(slide_to_roll) < 2.0):
         raise KegelInputError("<argument>", "slide_to_roll", slide_to_roll, "a value in (-2, 2)")
+    # the ranges of every other entry point (scene files, kegel tribology): the lubricant's
+    # temperature range and formulas, the speed limit n d_m, and (below) the Hertz pressure
+    from .lubricant import lubricant_state
+    from .scene import check_speed
+
+    lubricant_state(lubricant, temperature_K, key="temperature_K")
+    check_speed(shaft_speed_rad_s, bearing, source="<argument>", key="shaft_speed_rad_s")
 
     steel = material.core
     E = _core.reduced_modulus_Pa(steel, steel)
@@ -294,4 +307,9 @@ def evaluate_raceway_contact(
         tot[f"{k}_min"] = min(vals)
         tot[f"{k}_max"] = max(vals)
     tot["cage_speed_rpm"] = omega_c * 60 / (2 * math.pi)
+    if not tot["max_pressure_Pa_max"] <= MAX_CONTACT_PRESSURE_PA:
+        raise KegelInputError("<argument>", "load_N", load_N,
+                              f"a load whose Hertz pressure stays within {MAX_CONTACT_PRESSURE_PA / 1e6:.0f} MPa "
+                              f"(ISO 76's static limit for roller bearings; here p0 = "
+                              f"{tot['max_pressure_Pa_max'] / 1e6:.0f} MPa)")
     return ContactFriction(contact=contact, temperature_K=temperature_K, load_N=load_N, slices=rows, totals=tot)
