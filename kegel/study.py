@@ -153,11 +153,33 @@ _LINESTYLE = {"none": "-", "liebrecht": "-", "skf": "--", "cfd": ":"}
 _MARKER = {"none": "s", "liebrecht": "o", "skf": "^", "cfd": "D"}
 
 
+def _study_x_and_series(meta: dict[str, Any]) -> tuple[Any, list[Any]]:
+    """The study plot's x axis and the other swept quantities (one line per value of each), by
+    the run plots' rule: x is the first swept quantity other than the temperature, else the
+    temperature, else (a single point) the shaft speed."""
+    from .plots import AXES
+
+    swept = [s for s in meta.get("swept", []) if s in AXES]
+    xname = next((s for s in swept if s != "temperature"), swept[0] if swept else "speed")
+    return AXES[xname], [AXES[s] for s in swept if s != xname]
+
+
+def _shade(colour: Any, i: int, n: int) -> Any:
+    """The ``i``-th of ``n`` shades of a colour (the darkest first): one per value of the
+    quantities a study sweeps besides its x axis."""
+    if n <= 1:
+        return colour
+    f = 0.55 * i / (n - 1)
+    return tuple(c + (1.0 - c) * f for c in colour[:3])
+
+
 def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -> str:
     """The study's overlay plot (see the module docstring), written atomically; returns its path.
 
-    ``meta``: ``title``, ``x_key``, ``x_label``, ``x_scale`` (the swept quantity's record key,
-    axis label and scale factor) and ``cases`` (the lubrication names in the scene's order).
+    ``meta``: ``title``, ``swept`` (the swept quantities, keys of :data:`kegel.plots.AXES`, the
+    x axis's first) and ``cases`` (the lubrication names in the scene's order). Each line is one
+    lubrication x method at one value of every swept quantity besides x (its label names them),
+    sorted by x; a single operating point stands at its value with limits around it.
     """
     import matplotlib
 
@@ -165,47 +187,63 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
     import matplotlib.pyplot as plt
 
     from .io import atomic_save
+    from .plots import _style_x
 
-    xk, xs = meta["x_key"], meta["x_scale"]
-    pts = sorted(points, key=lambda p: p[xk])
+    xaxis, series = _study_x_and_series(meta)
+
+    def combo(p: dict[str, Any]) -> tuple[float | None, ...]:
+        return tuple(None if a.value(p) is None else float(f"{a.value(p):.9g}") for a in series)
+
+    pts = sorted(points, key=lambda p: (combo(p), xaxis.value(p) or 0.0))
+    combos = sorted({combo(p) for p in pts}, key=lambda t: tuple((v is None, v or 0.0) for v in t))
     cases = list(meta["cases"])
     colours = {c: plt.get_cmap("tab10")(i % 10) for i, c in enumerate(cases)}
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
-    x = [p[xk] * xs for p in pts]
-    if "minimum_quantity" not in cases:  # else its line is the friction alone
-        ax.plot(x, [p["friction_torque_Nm"] for p in pts], color="k", lw=2.5, alpha=0.35,
-                label="contact friction (kegel)")
-    keys: list[tuple[str, str]] = []
-    for p in pts:
-        for r in p.get("study") or ():
-            if (r["lubrication"], r["method"]) not in keys:
-                keys.append((r["lubrication"], r["method"]))
-    for case, m in keys:
-        xs_, tot, hyd, err, interp = [], [], [], [], []
-        for p in pts:
-            r = next((r for r in p.get("study") or () if r["lubrication"] == case and r["method"] == m), None)
-            if r is None or r.get("total_torque_Nm") is None:
+    all_x = [xaxis.value(p) for p in pts]
+
+    def combo_label(k: tuple[float | None, ...]) -> str:
+        return ", ".join(a.label(v) for a, v in zip(series, k) if v is not None)
+
+    for ci, k in enumerate(combos):
+        in_combo = [p for p in pts if combo(p) == k]
+        if "minimum_quantity" not in cases:  # else its line is the friction alone
+            lab = "contact friction (kegel)" + (f", {combo_label(k)}" if combo_label(k) else "")
+            ax.plot([xaxis.value(p) for p in in_combo], [p["friction_torque_Nm"] for p in in_combo],
+                    color=_shade((0.0, 0.0, 0.0), ci, len(combos)), lw=2.5, alpha=0.35, label=lab)
+        keys: list[tuple[str, str]] = []
+        for p in in_combo:
+            for r in p.get("study") or ():
+                if (r["lubrication"], r["method"]) not in keys:
+                    keys.append((r["lubrication"], r["method"]))
+        for case, m in keys:
+            xs_, tot, hyd, err, interp = [], [], [], [], []
+            for p in in_combo:
+                r = next((r for r in p.get("study") or () if r["lubrication"] == case and r["method"] == m), None)
+                if r is None or r.get("total_torque_Nm") is None:
+                    continue
+                xs_.append(xaxis.value(p))
+                tot.append(r["total_torque_Nm"])
+                hyd.append(abs(r["hydraulic_torque_Nm"]))
+                err.append((r.get("error_rel") or 0.0) * abs(r["hydraulic_torque_Nm"]))
+                interp.append(r.get("status") == "interpolated")
+            if not xs_:
                 continue
-            xs_.append(p[xk] * xs)
-            tot.append(r["total_torque_Nm"])
-            hyd.append(abs(r["hydraulic_torque_Nm"]))
-            err.append((r.get("error_rel") or 0.0) * abs(r["hydraulic_torque_Nm"]))
-            interp.append(r.get("status") == "interpolated")
-        if not xs_:
-            continue
-        label = f"{case.replace('_', ' ')}: {_METHOD_LABEL[m]}"
-        ax.plot(xs_, tot, ls=_LINESTYLE[m], marker=_MARKER[m], color=colours[case], label=label, ms=5)
-        if m != "none":
-            ax2.errorbar(xs_, [h * 1e3 for h in hyd], yerr=[e * 1e3 for e in err], ls=_LINESTYLE[m],
-                         marker=_MARKER[m], color=colours[case], label=label, ms=5, capsize=3)
-            if any(interp):
-                ax2.plot([a for a, i in zip(xs_, interp) if i], [h * 1e3 for h, i in zip(hyd, interp) if i],
-                         ls="none", marker=_MARKER[m], mfc="white", mec=colours[case], ms=7)
-    ax.set_xlabel(meta["x_label"])
+            label = f"{case.replace('_', ' ')}: {_METHOD_LABEL[m]}" + (f", {combo_label(k)}" if combo_label(k) else "")
+            colour = _shade(colours[case], ci, len(combos))
+            ax.plot(xs_, tot, ls=_LINESTYLE[m], marker=_MARKER[m], color=colour, label=label, ms=5)
+            if m != "none":
+                ax2.errorbar(xs_, [h * 1e3 for h in hyd], yerr=[e * 1e3 for e in err], ls=_LINESTYLE[m],
+                             marker=_MARKER[m], color=colour, label=label, ms=5, capsize=3)
+                if any(interp):
+                    ax2.plot([a for a, i in zip(xs_, interp) if i], [h * 1e3 for h, i in zip(hyd, interp) if i],
+                             ls="none", marker=_MARKER[m], mfc="white", mec=colour, ms=7)
+    for a in (ax, ax2):
+        _style_x(a, all_x)
+    ax.set_xlabel(xaxis.axis_label)
     ax.set_ylabel("total torque at the shaft [N m]")
     ax.set_title("friction + hydraulic loss", fontsize=9)
     ax.legend(fontsize=7)
-    ax2.set_xlabel(meta["x_label"])
+    ax2.set_xlabel(xaxis.axis_label)
     ax2.set_ylabel("hydraulic loss torque [N mm]")
     if ax2.lines:
         from matplotlib.ticker import LogFormatter

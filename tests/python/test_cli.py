@@ -93,16 +93,16 @@ def test_every_option_has_help_text():
 def test_speed_means_one_speed_in_every_command():
     """issue 20: --speed was a from/to pair in `losses`, one value in `cfd run`, a list in `cfd
     sweep`. Now it is one speed everywhere (repeatable: a list); a range is --speed-range."""
-    res = run_kegel("losses", "32208", "--speed", "500 rpm", "--speed", "1000 rpm", "--speed", "3000 rpm",
+    res = run_kegel("losses", "--bearing", "32208", "--speed", "500 rpm", "--speed", "1000 rpm", "--speed", "3000 rpm",
                     "--oil-level", "flooded", "--format", "json")
     assert res.returncode == 0, res.stderr
     speeds = sorted({round(p["speed_rpm"]) for p in json.loads(res.stdout)["points"] if p["correlation"] == "liebrecht"})
     assert speeds == [500, 1000, 3000]
-    rng = run_kegel("losses", "32208", "--speed-range", "500 rpm", "4000 rpm", "--points", "3", "--oil-level",
+    rng = run_kegel("losses", "--bearing", "32208", "--speed-range", "500 rpm", "4000 rpm", "--points", "3", "--oil-level",
                     "flooded", "--format", "json")
     assert rng.returncode == 0, rng.stderr
     assert sorted({round(p["speed_rpm"]) for p in json.loads(rng.stdout)["points"]}) == [500, 2250, 4000]
-    bad = run_kegel("losses", "32208", "--speed", "500 rpm", "--points", "3")
+    bad = run_kegel("losses", "--bearing", "32208", "--speed", "500 rpm", "--points", "3")
     assert bad.returncode == 2 and "--points" in bad.stderr and "--speed-range" in bad.stderr
     sweep_help = run_kegel("cfd", "sweep", "--help").stdout
     assert "none" not in sweep_help.split("--oil-level")[1].split("--mesh")[0]  # offered, then rejected

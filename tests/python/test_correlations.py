@@ -127,18 +127,18 @@ def test_rejects_bad_input(g32208):
 
 def test_cli_losses_table_json_and_plot(tmp_path):
     png = tmp_path / "losses.png"
-    res = run_kegel("losses", "32208", "--temperature", "50 degC", "--speed-range", "500 rpm", "4000 rpm",
+    res = run_kegel("losses", "--bearing", "32208", "--temperature", "50 degC", "--speed-range", "500 rpm", "4000 rpm",
                     "--points", "4", "--oil-level", "half_roller", "--oil-level", "flooded", "--plot", str(png))
     assert res.returncode == 0, res.stderr
     assert "drag" in res.stdout and "flooded" in res.stdout
     assert png.stat().st_size > 1000
-    res = run_kegel("losses", "32208", "--oil-level", "flooded", "--format", "json")
+    res = run_kegel("losses", "--bearing", "32208", "--oil-level", "flooded", "--format", "json")
     data = json.loads(res.stdout)
     rows = data["points"]
     # Liebrecht's rows as before, followed by the SKF drag rows (issue 19)
     assert rows and {r["correlation"] for r in rows} == {"liebrecht", "skf"}
     assert all(r["total_Nm"] > 0 for r in rows)
-    bad = run_kegel("losses", "32208", "--oil-level", "200 mm")
+    bad = run_kegel("losses", "--bearing", "32208", "--oil-level", "200 mm")
     assert bad.returncode == 2 and "--oil-level" in bad.stderr and "[0, D] = [0, 80 mm]" in bad.stderr
 
 
@@ -238,7 +238,7 @@ def test_speed_reading_rejected():
 # --- `kegel losses`: Liebrecht and SKF side by side ------------------------------------------------
 
 def test_cli_losses_side_by_side_table():
-    res = run_kegel("losses", "32208", "--speed", "2000 rpm",
+    res = run_kegel("losses", "--bearing", "32208", "--speed", "2000 rpm",
                     "--oil-level", "flooded", "--oil-level", "shaft_center")
     assert res.returncode == 0, res.stderr
     out = res.stdout
@@ -254,7 +254,7 @@ def test_cli_losses_side_by_side_table():
 
 
 def test_cli_losses_side_by_side_json_options_and_errors(tmp_path):
-    res = run_kegel("losses", "32208", "--speed", "2000 rpm",
+    res = run_kegel("losses", "--bearing", "32208", "--speed", "2000 rpm",
                     "--oil-level", "flooded", "--axial-load", "1 kN", "--radial-load", "2 kN",
                     "--skf-edition", "2005", "--format", "json")
     assert res.returncode == 0, res.stderr
@@ -268,13 +268,13 @@ def test_cli_losses_side_by_side_json_options_and_errors(tmp_path):
     assert skf_row["flooded"] and skf_row["oil_level_H_m"] == pytest.approx(0.076)
     assert skf_row["drag_second_term_Nm"] == 0.0
     assert skf_row["rolling_sliding_Nm"] == pytest.approx(skf_row["rolling_Nm"] + skf_row["sliding_Nm"])
-    bad = run_kegel("losses", "32208", "--axial-load", "-1 kN")
+    bad = run_kegel("losses", "--bearing", "32208", "--axial-load", "-1 kN")
     assert bad.returncode == 2 and "--axial-load" in bad.stderr and "a force >= 0" in bad.stderr
     # a bearing without SKF series constants: drag only
     src = (kegel.data.DATA_DIR / "bearings" / "32208.toml").read_text()
     other = tmp_path / "30208x.toml"
     other.write_text(src.replace('designation = "32208"', 'designation = "30208x"'))
-    res = run_kegel("losses", str(other), "--points", "2", "--oil-level", "flooded", "--format", "json")
+    res = run_kegel("losses", "--bearing", str(other), "--points", "2", "--oil-level", "flooded", "--format", "json")
     assert res.returncode == 0, res.stderr
     data = json.loads(res.stdout)
     assert data["skf"]["rolling_sliding"].startswith("no SKF series constants")
@@ -304,7 +304,7 @@ def test_losses_puts_cfd_results_beside_the_correlations(tmp_path):
     result("a", 323.15, None, 0.0652)
     result("b", 323.15, 0.04, 0.026)
     result("c", 353.15, None, 0.03)  # another temperature
-    res = run_kegel("losses", "32208", "--cfd", str(tmp_path), "--format", "json", "--plot", str(tmp_path / "l.png"))
+    res = run_kegel("losses", "--bearing", "32208", "--cfd", str(tmp_path), "--format", "json", "--plot", str(tmp_path / "l.png"))
     assert res.returncode == 0, res.stderr
     d = json.loads(res.stdout)
     rows = d["cfd"]

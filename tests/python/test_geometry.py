@@ -127,10 +127,10 @@ def test_cage_pocket_clearances(geom):
 def test_bearing_cli_table_and_json(kegel_json):
     from conftest import run_kegel
 
-    res = run_kegel("bearing", "32216")
+    res = run_kegel("bearing", "--bearing", "32216")
     assert res.returncode == 0, res.stderr
     assert "cup angle alpha_o" in res.stdout and "catalogue envelope: respected" in res.stdout
-    data = kegel_json("bearing", "32208")
+    data = kegel_json("bearing", "--bearing", "32208")
     assert data["bearing"]["designation"] == "32208"
     assert data["apex_residual"] < 1e-9
     assert data["envelope_violations"] == []

@@ -224,7 +224,7 @@ def test_custom_bearing_outside_its_envelope_is_rejected(write_scene, tmp_path):
     with pytest.raises(kegel.KegelInputError) as info:
         kegel.load_scene(p)
     assert str(bad) in str(info.value) and "overlap" in str(info.value)
-    listed = run_kegel("bearing", str(bad))
+    listed = run_kegel("bearing", "--bearing", str(bad))
     assert listed.returncode == 0 and "overlap" in listed.stdout
 
 
@@ -233,7 +233,7 @@ def test_custom_bearing_outside_its_envelope_is_rejected(write_scene, tmp_path):
     (("tribology", "--axial-load", "1e9 N"), "--axial-load", "4000 MPa"),
     (("tribology", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
     (("tribology", "--temperature", "-15 degC"), "--temperature", "domain"),
-    (("losses", "32208", "--speed", "500 rpm", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
+    (("losses", "--bearing", "32208", "--speed", "500 rpm", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
     (("cfd", "run", "--max-iterations", "-5"), "--max-iterations", "at least 1"),
     (("cfd", "run", "--temperature", "1000 degC"), "--temperature", "[-20, 150] degC"),
     (("cfd", "run", "--speed", "1e7 rpm"), "--speed", "rpm mm"),
