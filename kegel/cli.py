@@ -45,7 +45,7 @@ __all__ = ["main"]
 def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=sys.stdout) -> None:
     def fmt(v: Any) -> str:
         if isinstance(v, float):
-            return f"{v:.6g}"  # six figures in tables; every digit is in --format json
+            return f"{v:.4g}"  # engineers read 3-4 figures; every digit is in --format json
         return "" if v is None else str(v)
 
     cells = [[fmt(v) for v in row] for row in rows]

@@ -247,10 +247,11 @@ def test_cli_losses_side_by_side_table():
     assert "speeds in 1/min" in out and "Fa = 6 kN" in out
     flooded = next(line for line in out.splitlines() if line.startswith("flooded"))
     # Liebrecht total 144.926, SKF drag 127.497 (H = 1.2 d_m), SKF rolling+sliding at Fa = 6 kN
-    # 1303.95 N mm (hand values in test_skf.py and above)
-    assert "144.926" in flooded and "127.497" in flooded and "1303.95" in flooded
+    # 1303.95 N mm (hand values in test_skf.py and above), printed with four figures
+    cells = flooded.split()
+    assert "144.9" in cells and "127.5" in cells and "1304" in cells
     centre = next(line for line in out.splitlines() if line.startswith("shaft_center"))
-    assert "66.3641" in centre  # SKF drag at H = 0.6 d_m
+    assert "66.36" in centre.split()  # SKF drag at H = 0.6 d_m
 
 
 def test_cli_losses_side_by_side_json_options_and_errors(tmp_path):
