@@ -16,8 +16,9 @@ __all__ = ["add_cfd_parser"]
 
 
 def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str):
-    from kegel.data import load_bearing, load_lubricant
+    from kegel.data import load_bearing, load_lubricant, load_material
     from kegel.errors import KegelInputError
+    from kegel.geometry import derive_geometry
     from kegel.lubricant import lubricant_state
     from kegel.scene import check_speed, resolve_oil_level
     from kegel.units import parse_quantity
@@ -27,6 +28,9 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
 
     src = "command line"
     bearing = load_bearing(args.bearing, source=src, key="--bearing")
+    # the envelope check of every other command (rollers inside the rings, not overlapping)
+    derive_geometry(bearing, load_material("bearing_steel"))
+    bearing_file = str(Path(args.bearing).resolve()) if Path(args.bearing).is_file() else None
     speed = parse_quantity(speed_text, "speed", source=src, key="--speed")
     check_speed(speed, bearing, source=src, key="--speed", text=speed_text)  # non-zero, n d_m <= 1e6 rpm mm
     T = parse_quantity(args.temperature, "temperature", source=src, key="--temperature")
@@ -94,6 +98,8 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         extra["frame"] = args.frame
     if getattr(args, "no_cage", False):
         extra["cage"] = False
+    if bearing_file:
+        extra["bearing_file"] = bearing_file
     return CfdPoint(bearing=bearing.designation, speed_rad_s=speed, temperature_K=T, oil_level_m=level,
                     mesh=args.mesh, n_procs=args.np, lubricant=args.lubricant, end_time_s=end,
                     max_iterations=args.max_iterations, max_wall_time_s=wall, **extra)
@@ -112,11 +118,13 @@ def _case_name(point, level_text: str) -> str:
 
 def _liebrecht(point) -> dict[str, float]:
     from kegel.correlations import hydraulic_torques
-    from kegel.data import load_bearing, load_lubricant, load_material
+    from kegel.data import load_lubricant, load_material
     from kegel.geometry import derive_geometry
     from kegel.lubricant import lubricant_state
 
-    bearing = load_bearing(point.bearing)
+    from .run import point_bearing
+
+    bearing = point_bearing(point)
     g = derive_geometry(bearing, load_material(point.material))
     state = lubricant_state(load_lubricant(point.lubricant), point.temperature_K)
     level = bearing.outer_diameter_m if point.oil_level_m is None else point.oil_level_m
@@ -191,9 +199,9 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
         times = [p for p in time_dirs(case) if (p / "alpha.oil").is_file()]
         if times:
             zc = float(np.mean([r["centre_m"][2] for r in meta["rollers"]]))
-            from kegel.data import load_bearing
+            from .run import point_bearing
 
-            R = 0.5 * load_bearing(point.bearing).outer_diameter_m
+            R = 0.5 * point_bearing(point).outer_diameter_m
             pictures["oil_distribution"] = str(plot_oil_distribution(case, times[-1], zc, case / "oil_distribution.png",
                                                                      housing_radius_m=R))
     lieb = _liebrecht(point)

@@ -101,6 +101,9 @@ class CfdPoint:
     # evaluates the viscous stress over the whole mesh; sampling every step cost about 1 s of a
     # 2.5 s step on the small mesh. Steps are tens of microseconds, so the histories keep their shape.
     force_sample_steps: int = 5
+    # The bearing's data file when it was given as a file (``kegel cfd run --bearing FILE``);
+    # None: the shipped data of the designation ``bearing``
+    bearing_file: str | None = None
 
     @property
     def flooded(self) -> bool:
@@ -166,12 +169,20 @@ def _bodies(cg: CfdGeometry, cage: bool = True) -> list[dict[str, Any]]:
     return bodies
 
 
+def point_bearing(point: CfdPoint):
+    """The point's bearing data: its data file when it was given one, else the shipped data of
+    its designation."""
+    from kegel.data import load_bearing
+
+    return load_bearing(point.bearing_file or point.bearing)
+
+
 def _load(point: CfdPoint):
-    from kegel.data import load_bearing, load_lubricant, load_material
+    from kegel.data import load_lubricant, load_material
     from kegel.geometry import derive_geometry
     from kegel.lubricant import lubricant_state
 
-    bearing = load_bearing(point.bearing)
+    bearing = point_bearing(point)
     g = derive_geometry(bearing, load_material(point.material))
     lub = lubricant_state(load_lubricant(point.lubricant), point.temperature_K)
     return bearing, g, lub
@@ -613,10 +624,19 @@ class _SteadyMonitor:
         return False
 
 
+def _case_has_cage(case: Path) -> bool:
+    """Whether the case was built with its cage (its kegel-case.json says; True without one)."""
+    meta = case / "kegel-case.json"
+    if not meta.is_file():
+        return True
+    return json.loads(meta.read_text()).get("point", {}).get("cage", True) is not False
+
+
 def _forces(case: Path, name: str) -> ForceSeries:
-    """The force history of body ``name``; a body the case does not have (the cage of a case
-    without it) has none: zero forces at the inner ring's times."""
-    if name == "cage" and not (case / "postProcessing" / "forces_cage").is_dir():
+    """The force history of body ``name``; the cage of a case built without it (its
+    kegel-case.json says so, not a missing force file: a caged case without its cage forces is
+    an error, never a zero) has none: zero forces at the inner ring's times."""
+    if name == "cage" and not _case_has_cage(case):
         ref = read_forces(case, "forces_inner_ring")
         z = np.zeros_like(ref.force_total)
         return ForceSeries(ref.time, z, z, z, z, z, z)
@@ -765,25 +785,36 @@ def _balance(t: dict[str, dict[str, float]], gravity: dict[str, Any] | None = No
     if gravity is not None:
         out["weight_moment_on_fluid_Nm"] = weight
         out["weight_moment_states_s"] = gravity["states_s"]
-    out["relative_to_drive_torque"] = (total - weight) / drive if drive else float("nan")
+    # None (never NaN: results.json is strict JSON) where the balance cannot be evaluated
+    if weight is None:
+        out["relative_to_drive_torque"] = None
+        out["not_evaluated"] = "no oil distribution written yet (the run is shorter than a shaft revolution)"
+    elif not drive:
+        out["relative_to_drive_torque"] = None
+        out["not_evaluated"] = "no drive torque"
+    else:
+        out["relative_to_drive_torque"] = (total - weight) / drive
     return out
 
 
 def fluid_gravity_torque(case: Path, meta: dict[str, Any], window: tuple[float, float], n_procs: int) -> dict[str, Any]:
     """The moment of the fluid's weight about the bearing axis (oil and air, SI), the mean over
     the written states in the averaging ``window`` (fields are written every shaft revolution;
-    with none inside it, the last one before its end).
+    with none inside it, the last one before its end, else the first after it).
 
-    Returns ``{"torque_Nm": ..., "states_s": [...]}``; ``torque_Nm`` is NaN when no state is
+    Returns ``{"torque_Nm": ..., "states_s": [...]}``; ``torque_Nm`` is None when no state is
     written (the balance then says so instead of passing)."""
     src = case / "processor0" if n_procs > 1 and (case / "processor0").is_dir() else case
     written = [d for d in time_dirs(src) if float(d.name) > 0.0 and (d / "alpha.oil").is_file()]
     inside = [d for d in written if window[0] <= float(d.name) <= window[1] * (1 + 1e-9)]
     if not inside:
+        # none inside: the last one before its end, else the first after it (a run shorter than a
+        # shaft revolution writes its state only at its end, a few force samples after the window)
         last = last_write_at_or_before(written, window[1])
-        inside = [last] if last is not None else []
+        after = [d for d in written if float(d.name) > window[1]]
+        inside = [last] if last is not None else after[:1]
     if not inside:
-        return {"torque_Nm": float("nan"), "states_s": []}
+        return {"torque_Nm": None, "states_s": []}
     volumes = case / "cell_volumes.npy"
     if not volumes.is_file():
         run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
