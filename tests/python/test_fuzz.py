@@ -6,15 +6,13 @@ values, wrong units, extreme magnitudes, non-numbers, ranges and wrong types."""
 
 from __future__ import annotations
 
-import io
 import json
 import math
 import random
-from contextlib import redirect_stderr, redirect_stdout
 
 import pytest
 
-from kegel.cli import main
+from conftest import call_kegel as _call
 
 KEYS = {
     "operating.axial_load": "force", "operating.radial_load": "force", "operating.speed": "speed",
@@ -55,16 +53,6 @@ def _value(rng: random.Random, kind: str) -> str:
     if kind == "bool":
         return rng.choice(["true", "false", '"yes"', "1", '"pocket"', '"free_rollers"'])
     return json.dumps(rng.choice(WORDS))
-
-
-def _call(*argv: str) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with redirect_stdout(out), redirect_stderr(err):
-        try:
-            code = main(list(argv))
-        except SystemExit as exc:  # argparse
-            code = int(exc.code or 0)
-    return code, out.getvalue(), err.getvalue()
 
 
 def _cases(seed: int, n: int) -> list[list[str]]:

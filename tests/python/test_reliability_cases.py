@@ -12,15 +12,13 @@ import signal
 import subprocess
 import sys
 import time
-from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import kegel
-from conftest import EXAMPLES, run_kegel, scene_text
-from kegel.cli import main
+from conftest import EXAMPLES, call_kegel as _call, run_kegel, scene_text
 
 TABLE1 = str(EXAMPLES / "32216_table1.toml")
 TABLE3 = str(EXAMPLES / "32216_table3.toml")
@@ -28,17 +26,6 @@ ONE_POINT = ("--set", 'operating.speed="2000 rpm"', "--set", 'operating.temperat
              "--set", 'model.fidelity="fast"')
 BEARING_FILE = Path(kegel.__file__).parent / "data" / "bearings" / "32216.toml"
 RPM = math.pi / 30
-
-
-def _call(*argv: str) -> tuple[int, str, str]:
-    """kegel's command line in this process (as tests/python/test_fuzz.py calls it)."""
-    out, err = io.StringIO(), io.StringIO()
-    with redirect_stdout(out), redirect_stderr(err):
-        try:
-            code = main(list(argv))
-        except SystemExit as exc:  # argparse
-            code = int(exc.code or 0)
-    return code, out.getvalue(), err.getvalue()
 
 
 def _one_line_error(code: int, err: str, *words: str) -> None:

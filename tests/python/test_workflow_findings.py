@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES, REPO, run_kegel, scene_text
-from test_fuzz import _call
+from conftest import call_kegel as _call
 from test_outputs import STUDY, _fake_cfd
 from test_plots import _all_text
 
