@@ -331,7 +331,6 @@ def _write_summary(scene: Scene, friction, choice, points: list[dict[str, Any]],
     return files
 
 
-#: The swept quantity of a plot's x axis: record key, axis label, scale.
 def _study_plot_meta(scene: Scene) -> dict[str, Any]:
     """The study plot's metadata: title, the swept quantities (x axis first, as the run plots
     choose it: see :mod:`kegel.plots`) and the lubrication cases in the scene's order."""
