@@ -34,6 +34,10 @@ Codes
     The CFD result used is not in angular-momentum balance (its wall torques do not sum to zero
     within ``kegel.coupling.cfd_results.BALANCE_LIMIT`` of the drive torque): the oil had not
     settled, and its loss is not confirmed.
+``contacts_fully_flooded``
+    Minimum-quantity lubrication (a scene's, or a study's case) with fully flooded contacts: the
+    contact friction is that of an unlimited oil supply, as kegel does not know how much oil
+    reaches the raceways; a starved inlet is ``model.inlet_gap_ratio`` (Biboulet-Houpert Eq. 44).
 ``cfd_interpolated`` / ``cfd_missing``
     A study's CFD loss interpolated between computed speeds (with its error), or not computed.
 """
@@ -129,6 +133,12 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
     if scene.fidelity.cage is True and point.get("cage_model") == "pocket":
         out.append(Warning_("cage_pocket_fallback", "the free-roller cage solution failed its balances: the cage "
                             "pockets carry every roller (pocket model)"))
+    mql = scene.lubrication.mode == "minimum_quantity" if getattr(scene, "study", None) is None else any(
+        c.mode == "minimum_quantity" for c in scene.study.cases)
+    if mql and not scene.fidelity.inlet_gap_ratio and point.get("solved", True):
+        out.append(Warning_("contacts_fully_flooded", "minimum-quantity lubrication: the contact friction is "
+                            "that of fully flooded raceway contacts (kegel does not know how much oil reaches "
+                            "them; a starved inlet is model.inlet_gap_ratio, Biboulet-Houpert Eq. 44)"))
     lam = point.get("Lambda_min") or {}
     if isinstance(lam, dict) and lam:
         worst = min(lam, key=lambda k: lam[k])
