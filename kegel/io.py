@@ -204,7 +204,11 @@ class RunFolder:
             self._write_line({"kegel_run": self.key, "run_id": self.run_id})
             return {}
         # an interrupted run of this key (perhaps before its first point finished: its dynamic
-        # checkpoint is kept): resume
+        # checkpoint is kept): resume, after the last whole line (a line cut by the interrupt
+        # would otherwise swallow the next point's)
+        with open(stream, "rb+") as fh:
+            text = fh.read()
+            fh.truncate(text.rfind(b"\n") + 1)
         self._stream = open(stream, "a", encoding="utf-8")
         return done
 

@@ -142,3 +142,22 @@ def test_a_full_disk_gives_one_line_and_the_run_resumes(tmp_path, size):
         assert len(json.loads((disk / "out" / "results.json").read_text())["points"]) == 15
     finally:
         subprocess.run(["umount", str(disk)], capture_output=True, timeout=10)
+
+
+def test_a_resumed_stream_drops_the_cut_line_before_appending(tmp_path):
+    """A line cut by an interrupt is dropped before the resumed run appends: the next point's line
+    stays whole, so a second resume finds every point the first one added."""
+    from kegel.io import RunFolder
+
+    key = {"scene": "s"}
+    with RunFolder(tmp_path, key, ()) as folder:
+        assert folder.open() == {}
+        folder.add({"index": 0, "x": 1.0})
+    with open(tmp_path / RunFolder.STREAM, "a", encoding="utf-8") as fh:
+        fh.write('{"point": {"index": 1, "x"')  # the interrupt cut this line
+    with RunFolder(tmp_path, key, ()) as folder:
+        assert sorted(folder.open()) == [0]
+        folder.add({"index": 1, "x": 2.0})
+    with RunFolder(tmp_path, key, ()) as folder:
+        done = folder.open()
+    assert sorted(done) == [0, 1] and done[1]["x"] == 2.0
