@@ -42,17 +42,30 @@ from .units import parse_quantity
 __all__ = ["main"]
 
 
-def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=sys.stdout) -> None:
+#: A run's table shows at most this many rows (the first and the last half); every row is in
+#: results.csv and results.json.
+MAX_TABLE_ROWS = 100
+
+
+def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=None, *,
+                 max_rows: int | None = None, where: str = "") -> None:
+    out = out if out is not None else sys.stdout  # at call time (a redirected stdout included)
     def fmt(v: Any) -> str:
         if isinstance(v, float):
             return f"{v:.4g}"  # engineers read 3-4 figures; every digit is in --format json
         return "" if v is None else str(v)
 
+    hidden = 0
+    if max_rows is not None and len(rows) > max_rows:
+        hidden = len(rows) - max_rows
+        rows = [*rows[:max_rows // 2], *rows[len(rows) - (max_rows - max_rows // 2):]]
     cells = [[fmt(v) for v in row] for row in rows]
     widths = [max(len(h), *(len(r[i]) for r in cells)) if cells else len(h) for i, h in enumerate(headers)]
     print("  ".join(h.ljust(w) for h, w in zip(headers, widths)).rstrip(), file=out)
     print("  ".join("-" * w for w in widths), file=out)
-    for r in cells:
+    for k, r in enumerate(cells):
+        if hidden and k == max_rows // 2:
+            print(f"... {hidden} rows not shown (every row: {where or 'the result files'})", file=out)
         print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(r, widths))).rstrip(), file=out)
 
 
@@ -550,13 +563,15 @@ def _cmd_run(args: argparse.Namespace) -> int:
                      "yes" if p["converged"] else "FAILED"))
     _print_table(("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
                   "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "rib [Nm]", "Lambda_min", "SKF rr+sl [Nm]",
-                  "converged"), rows)
+                  "converged"), rows, max_rows=MAX_TABLE_ROWS, where="results.csv")
     if any(p.get("skf_catalogue_model") for p in result.points):
         print("  SKF rr+sl: the SKF catalogue model's rolling + sliding moment (an independent engineering model; "
               "kegel.correlations.skf), beside M_fric")
     failed = [p for p in result.points if not p["converged"]]
-    for p in failed:
+    for p in failed[:10]:
         print(f"  point {p['index']} FAILED its plausibility gates: {p.get('failure')}")
+    if len(failed) > 10:
+        print(f"  ... and {len(failed) - 10} more failed points (results.csv: columns converged, failure)")
     if any(p["axial_load_N"] is None for p in result.points):
         print("  * axial force carried at the prescribed axial offset")
     if scene.study is not None:
@@ -622,7 +637,8 @@ def _print_study(points: list[dict[str, Any]]) -> None:
                          f"{p['friction_torque_Nm']:.4g}", *cells))
     print("\nStudy: total torque at the shaft [N m] (hydraulic loss [N mm]) by lubrication and method; "
           "~ CFD interpolated (+- its stated error); ! CFD not settled (see its warning)")
-    _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "M_fric [Nm]", *(label[m] for m in methods)), rows)
+    _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "M_fric [Nm]", *(label[m] for m in methods)), rows,
+                 max_rows=MAX_TABLE_ROWS, where="study.csv")
     if missing:
         print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")
         for c in missing[:5]:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import run_kegel
+from conftest import EXAMPLES, call_kegel, run_kegel
 
 KEGEL = str(Path(sys.executable).with_name("kegel"))
 COMMANDS = ("list", "init", "bearing", "lubricant", "tribology", "losses", "cfd", "validate", "check", "run")
@@ -106,3 +106,20 @@ def test_speed_means_one_speed_in_every_command():
     assert bad.returncode == 2 and "--points" in bad.stderr and "--speed-range" in bad.stderr
     sweep_help = run_kegel("cfd", "sweep", "--help").stdout
     assert "none" not in sweep_help.split("--oil-level")[1].split("--mesh")[0]  # offered, then rejected
+
+
+def test_a_long_sweep_prints_the_first_and_last_rows_and_says_where_the_rest_is(tmp_path):
+    """A run's table shows at most MAX_TABLE_ROWS rows (a 10^5-point sweep printed 10^5 lines):
+    the first and the last half, with a line naming the hidden count and results.csv."""
+    from kegel.cli import MAX_TABLE_ROWS
+
+    code, out, err = call_kegel("run", str(EXAMPLES / "32216_table1.toml"), "--set", 'model.fidelity="fast"',
+                                "--set", 'operating.speed={from="500 rpm", to="4000 rpm", points=70}',
+                                "--output", str(tmp_path / "r"))
+    assert code == 0, err
+    rows = [ln for ln in out.splitlines() if ln[:1].isdigit()]
+    assert len(rows) == MAX_TABLE_ROWS  # 140 points (70 speeds x 2 temperatures)
+    assert rows[0].split()[0] == "0" and rows[-1].split()[0] == "139"
+    assert "... 40 rows not shown (every row: results.csv)" in out
+    with open(tmp_path / "r" / "results.csv") as fh:
+        assert sum(1 for _ in fh) == 141
