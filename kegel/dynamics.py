@@ -332,8 +332,9 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     """
     # the limits of a dynamic scene (kegel.scene), the same for the Python API
     from .lubricant import lubricant_state
-    from .scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, max_speed_rpm,
-                        static_equivalent_load_N)
+    from .scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, _speed_limit_text,
+                        max_speed_rpm, static_equivalent_load_N)
+    from .units import RPM_TO_RAD_S
 
     if (axial_N is None) == (axial_offset_m is None):
         raise KegelInputError("<argument>", "axial_N", axial_N, "exactly one of axial_N and axial_offset_m")
@@ -351,10 +352,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if prof.ndim != 2 or prof.shape[1] != 2 or not np.all(np.diff(prof[:, 0]) > 0) or not np.isfinite(prof).all():
         raise KegelInputError("<argument>", "speed_profile", speed_profile,
                               "(time_s, speed_rad_s) pairs with increasing times")
-    n_max = max_speed_rpm(bearing)
-    if not np.all(np.abs(prof[:, 1]) * 30.0 / math.pi <= n_max):
-        raise KegelInputError("<argument>", "speed_profile", speed_profile,
-                              f"speeds with |n| <= {n_max:.0f} rpm (n d_m <= 1e6 rpm mm for bearing {bearing.designation})")
+    if not np.all(np.abs(prof[:, 1]) / RPM_TO_RAD_S <= max_speed_rpm(bearing)):
+        raise KegelInputError("<argument>", "speed_profile", speed_profile, f"speeds with {_speed_limit_text(bearing)}")
     for fa, fr in ([(axial_N, radial_N)] if axial_N is not None else []) + [
             (row[1], row[2]) for row in np.asarray(load_profile, dtype=float).reshape(-1, 3)]:
         if math.isfinite(fa) and math.isfinite(fr) and fa > 0 and fr >= 0 \

@@ -52,6 +52,7 @@ __all__ = [
     "plot_meta_from_scene",
     "run_plots",
     "save_figure",
+    "x_and_series",
 ]
 
 
@@ -258,14 +259,28 @@ def _evenly(items: list[Any], n: int) -> list[Any]:
     return [items[i] for i in idx]
 
 
+def x_and_series(swept: Sequence[str]) -> tuple[str, list[str]]:
+    """The x axis of a run's plots and the other swept quantities, by the rule of the module
+    docstring: x is the first swept quantity other than the temperature, else the temperature,
+    else (a single point) the shaft speed; the others follow in order, the temperature last.
+
+    Parameters
+    ----------
+    swept
+        The swept quantities (keys of :data:`AXES`; others are ignored), the fastest first.
+    """
+    swept = [s for s in swept if s in AXES]
+    xname = next((s for s in swept if s != "temperature"), swept[0] if swept else "speed")
+    series = [s for s in swept if s not in (xname, "temperature")] + [s for s in swept if s == "temperature" and s != xname]
+    return xname, series
+
+
 def _layout(points: Sequence[dict[str, Any]], meta: PlotMeta) -> _Layout:
     notes = []
     drawable = [p for p in points if p.get("total_torque_Nm") is not None and p.get("friction_torque_Nm") is not None]
     if len(drawable) < len(points):
         notes.append(f"{len(points) - len(drawable)} point(s) failed without figures: not drawn (see results.csv)")
-    swept = [s for s in meta.get("swept", []) if s in AXES]
-    xname = next((s for s in swept if s != "temperature"), swept[0] if swept else "speed")
-    series = [s for s in swept if s not in (xname, "temperature")] + [s for s in swept if s == "temperature" and s != xname]
+    xname, series = x_and_series(meta.get("swept", []))
     x = AXES[xname]
     # lines: the first further quantity with at most MAX_LINES values; panels: the others
     line_axes = next(([s] for s in series if len(_values(drawable, AXES[s])) <= MAX_LINES), [])

@@ -157,11 +157,10 @@ def _study_x_and_series(meta: dict[str, Any]) -> tuple[Any, list[Any]]:
     """The study plot's x axis and the other swept quantities (one line per value of each), by
     the run plots' rule: x is the first swept quantity other than the temperature, else the
     temperature, else (a single point) the shaft speed."""
-    from .plots import AXES
+    from .plots import AXES, x_and_series
 
-    swept = [s for s in meta.get("swept", []) if s in AXES]
-    xname = next((s for s in swept if s != "temperature"), swept[0] if swept else "speed")
-    return AXES[xname], [AXES[s] for s in swept if s != xname]
+    xname, series = x_and_series(meta.get("swept", []))
+    return AXES[xname], [AXES[s] for s in series]
 
 
 def _shade(colour: Any, i: int, n: int) -> Any:
