@@ -200,13 +200,12 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
     all_x = [xaxis.value(p) for p in pts]
 
-    def combo_label(k: tuple[float | None, ...]) -> str:
-        return ", ".join(a.label(v) for a, v in zip(series, k) if v is not None)
-
     for ci, k in enumerate(combos):
         in_combo = [p for p in pts if combo(p) == k]
+        # the values of the other swept quantities, named in each label of this combination
+        suffix = "".join(f", {a.label(v)}" for a, v in zip(series, k) if v is not None)
         if "minimum_quantity" not in cases:  # else its line is the friction alone
-            lab = "contact friction (kegel)" + (f", {combo_label(k)}" if combo_label(k) else "")
+            lab = "contact friction (kegel)" + suffix
             ax.plot([xaxis.value(p) for p in in_combo], [p["friction_torque_Nm"] for p in in_combo],
                     color=_shade((0.0, 0.0, 0.0), ci, len(combos)), lw=2.5, alpha=0.35, label=lab)
         keys: list[tuple[str, str]] = []
@@ -227,7 +226,7 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
                 interp.append(r.get("status") == "interpolated")
             if not xs_:
                 continue
-            label = f"{case.replace('_', ' ')}: {_METHOD_LABEL[m]}" + (f", {combo_label(k)}" if combo_label(k) else "")
+            label = f"{case.replace('_', ' ')}: {_METHOD_LABEL[m]}" + suffix
             colour = _shade(colours[case], ci, len(combos))
             ax.plot(xs_, tot, ls=_LINESTYLE[m], marker=_MARKER[m], color=colour, label=label, ms=5)
             if m != "none":
