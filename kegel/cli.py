@@ -633,12 +633,17 @@ def _print_study(points: list[dict[str, Any]]) -> None:
                 if any(w["code"] in ("cfd_unbalanced", "cfd_not_steady") for w in r.get("warnings", ())):
                     err += " !"
                 cells.append(f"{mark}{r['total_torque_Nm']:.4g} ({1e3 * r['hydraulic_torque_Nm']:.3g}){err}")
+            first = next(iter(by.values()))
+            fi, fo = first.get("supply_rolling_force_factor_inner"), first.get("supply_rolling_force_factor_outer")
+            supply = f"{fi:.3f}/{fo:.3f}" if fi is not None and fo is not None else ""
             rows.append((p["index"], f"{p['speed_rpm']:.0f}", f"{p['temperature_degC']:g}", case.replace("_", " "),
-                         f"{p['friction_torque_Nm']:.4g}", *cells))
+                         supply, f"{first.get('friction_torque_Nm', p['friction_torque_Nm']):.4g}", *cells))
     print("\nStudy: total torque at the shaft [N m] (hydraulic loss [N mm]) by lubrication and method; "
           "~ CFD interpolated (+- its stated error); ! CFD not settled (see its warning)")
-    _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "M_fric [Nm]", *(label[m] for m in methods)), rows,
-                 max_rows=MAX_TABLE_ROWS, where="study.csv")
+    _print_table(("#", "n [rpm]", "T [degC]", "lubrication", "supply in/out", "M_fric [Nm]",
+                  *(label[m] for m in methods)), rows, max_rows=MAX_TABLE_ROWS, where="study.csv")
+    print("  supply in/out: the oil supply's factor on the flooded EHL rolling force of the inner / outer raceway "
+          "contacts (1: flooded; kegel.supply)")
     if missing:
         print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")
         for c in missing[:5]:

@@ -35,9 +35,14 @@ Codes
     within ``kegel.coupling.cfd_results.BALANCE_LIMIT`` of the drive torque): the oil had not
     settled, and its loss is not confirmed.
 ``contacts_fully_flooded``
-    Minimum-quantity lubrication (a scene's, or a study's case) with fully flooded contacts: the
-    contact friction is that of an unlimited oil supply, as kegel does not know how much oil
-    reaches the raceways; a starved inlet is ``model.inlet_gap_ratio`` (Biboulet-Houpert Eq. 44).
+    Minimum-quantity lubrication (a scene's, or a study's case) with fully flooded contacts
+    (``model.lubricant_supply = "flooded"`` and no ``model.inlet_gap_ratio``): the contact
+    friction is that of an unlimited oil supply. With the default supply model
+    (:mod:`kegel.supply`) the raceway contacts' inlet is modelled and the warning does not appear.
+``supply_beyond_source_range``
+    The supply model's starvation factor (SKF's ``phi_rs``) lies below Biboulet-Houpert's Eq. 44
+    at its most starved computed inlet (S = 2, factor 0.2001): the contacts get that factor, a
+    smaller reduction than SKF's.
 ``cfd_interpolated`` / ``cfd_missing``
     A study's CFD loss interpolated between computed speeds (with its error), or not computed.
 """
@@ -135,10 +140,17 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
                             "pockets carry every roller (pocket model)"))
     mql = scene.lubrication.mode == "minimum_quantity" if getattr(scene, "study", None) is None else any(
         c.mode == "minimum_quantity" for c in scene.study.cases)
-    if mql and not scene.fidelity.inlet_gap_ratio and point.get("solved", True):
+    supply_modelled = getattr(scene.fidelity, "lubricant_supply", "flooded") != "flooded"
+    if mql and not supply_modelled and not scene.fidelity.inlet_gap_ratio and point.get("solved", True):
         out.append(Warning_("contacts_fully_flooded", "minimum-quantity lubrication: the contact friction is "
-                            "that of fully flooded raceway contacts (kegel does not know how much oil reaches "
-                            "them; a starved inlet is model.inlet_gap_ratio, Biboulet-Houpert Eq. 44)"))
+                            "that of fully flooded raceway contacts (model.lubricant_supply = \"flooded\"; the "
+                            "default \"kinematic_replenishment\" models their inlet, kegel.supply)"))
+    supplies = [point.get("lubricant_supply")] + [c.get("lubricant_supply")
+                                                  for c in (point.get("study_friction") or {}).values()]
+    if any(s and (s.get("clamped_inner") or s.get("clamped_outer")) for s in supplies):
+        out.append(Warning_("supply_beyond_source_range", "the oil supply's starvation factor (SKF phi_rs) is below "
+                            "Biboulet-Houpert's Eq. 44 at its most starved computed inlet (S = 2, factor 0.2001): "
+                            "the raceway contacts get that factor, a smaller reduction than SKF's"))
     lam = point.get("Lambda_min") or {}
     if isinstance(lam, dict) and lam:
         worst = min(lam, key=lambda k: lam[k])

@@ -115,10 +115,16 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 bar.update(len(points), label + " (resumed)")
                 continue
             try:
+                # the raceway contacts' inlet supply at this point (kegel.supply); a study's own
+                # point has flooded contacts, each of its lubrications is solved with its supply
+                op_friction, supply = _point_friction(scene, friction, op)
                 if fid.solution == "dynamic":
-                    point = _dynamic_point(scene, op, friction, out, progress, cfd_runs)
+                    point = _dynamic_point(scene, op, op_friction, out, progress, cfd_runs)
                 else:
-                    point, data = _quasi_static_record(scene, fid, op, friction, model, data, cfd_runs)
+                    point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
+                point["lubricant_supply"] = supply.as_dict()
+                if scene.study is not None and point.get("solved", True):
+                    point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model)
             except (KegelSolverError, SimulationDiverged) as exc:
                 # the run keeps the points that finished and goes on: this one is recorded as
                 # failed with the solver's message (and never warm-starts the next point)
@@ -364,9 +370,53 @@ def _skf_point(scene: Scene, op, state, axial_N: float) -> dict[str, Any] | None
 
 def _friction(fid: "Fidelity"):
     """The friction parameters with the scene's rolling-resistance options (``model.rolling_thermal``,
-    ``model.inlet_gap_ratio``)."""
+    ``model.inlet_gap_ratio``, ``model.contact_film_limit``)."""
     return dataclasses.replace(load_friction(), rolling_thermal=fid.rolling_thermal,
-                               inlet_gap_ratio=fid.inlet_gap_ratio)
+                               inlet_gap_ratio=fid.inlet_gap_ratio, contact_film_limit_m=fid.contact_film_limit_m)
+
+
+def _point_friction(scene: Scene, friction, op, lubrication=None):
+    """The friction parameters of one operating point with the inlet supply of its raceway
+    contacts (:func:`kegel.supply.lubricant_supply`) for ``lubrication`` (default: the scene's;
+    a study's own point: flooded contacts), and that supply."""
+    from .supply import lubricant_supply
+
+    lub = lubrication
+    supply_model = scene.fidelity.lubricant_supply
+    if lub is None:
+        lub = scene.lubrication
+        if scene.study is not None:
+            supply_model = "flooded"  # the study's lubrications are solved in _study_case_friction
+    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
+    supply = lubricant_supply(scene.geometry, scene.bearing, mode=lub.mode, oil_level_m=lub.oil_level_m,
+                              speed_rad_s=op.speed_rad_s, kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
+                              model=supply_model)
+    return dataclasses.replace(friction, inlet_gap_ratio_inner=supply.inlet_gap_ratio_inner,
+                               inlet_gap_ratio_outer=supply.inlet_gap_ratio_outer), supply
+
+
+def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dict[str, Any], model) -> dict[str, Any]:
+    """A study point's contact friction per lubrication, each with its raceway contacts' inlet
+    supply: a lubrication whose contacts are flooded reuses the point's solution (flooded
+    contacts), any other is solved again (quasi-static; a dynamic study keeps the point's
+    friction and says so in ``note``)."""
+    from .study import case_name
+
+    out: dict[str, Any] = {}
+    for lub in scene.study.cases:
+        f_case, supply = _point_friction(scene, friction, op, lub)
+        rec: dict[str, Any] = {"lubricant_supply": supply.as_dict()}
+        same = (f_case.inlet_gap_ratio_inner, f_case.inlet_gap_ratio_outer) == (0.0, 0.0)
+        if same or fid.solution == "dynamic":
+            rec.update(friction_torque_Nm=point["friction_torque_Nm"], converged=point["converged"],
+                       torque_by_mechanism_Nm=point.get("torque_by_mechanism_Nm"),
+                       note="" if same else "dynamic study: the friction of flooded contacts (supply not applied)")
+        else:
+            _, fr = _quasi_static_point(scene, fid, op, f_case, model=model)
+            rec.update(friction_torque_Nm=fr.drive_torque_Nm, converged=fr.converged,
+                       torque_by_mechanism_Nm=fr.torque_by_mechanism_Nm(op.speed_rad_s), note="")
+        out[case_name(lub)] = rec
+    return out
 
 
 def _rib_cells(fid: "Fidelity") -> int:
@@ -404,7 +454,8 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     for level in AUTO_LEVELS:
         fid = dataclasses.replace(scene.fidelity, **FIDELITY_PRESETS[level])
         t0 = time.perf_counter()
-        torques = [_quasi_static_point(scene, fid, op, friction)[1].drive_torque_Nm for op in checks]
+        torques = [_quasi_static_point(scene, fid, op, _point_friction(scene, friction, op)[0])[1].drive_torque_Nm
+                   for op in checks]
         rows[level] = {"torques_Nm": torques, "runtime_s": time.perf_counter() - t0}
     ref = rows["fine"]["torques_Nm"]
     for r in rows.values():
@@ -445,8 +496,9 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
     if fid.hydraulic == "cfd":
         # the CFD result of this point: rollers and cage through the fitted force law, the oil's
         # torque on the inner ring and the shaft (turning with the prescribed speed) on top
+        # (levels from this point's result, speed exponents fitted over the same CFD model's sweep)
         cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
-        law = flow_forces_from_cfd(cfd, g, source=str(cfd_file))
+        law = flow_forces_from_cfd(cfd, g, sweep=cfd_runs, source=str(cfd_file))
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
@@ -481,6 +533,9 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         churning = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "inner_ring_and_shaft_Nm": churning, "roller_drag_on_the_bodies_Nm": roller_drag,
+                   # the CFD's bodies' share at its own kinematics (pure rolling): what the
+                   # flow-force laws take there; the dynamic run's share differs by its slip
+                   "bodies_share_in_the_cfd_Nm": cfd["loss_torque_at_shaft_Nm"] - churning,
                    "flow_force_law": law.as_dict(), "cfd_point": cfd["point"], "steady": cfd.get("steady"),
                    "angular_momentum_balance": _balance_of(cfd)}
     power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
@@ -519,13 +574,29 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         "axial_force_N": -float(res.series["ring_force_N"][-1][2]),
         "ring_displacement_m": res.states[-1][12 * Z + 13:12 * Z + 16].tolist(),
         "load_residual": None,
-        "converged": res.finished,
+        # the means are an answer only where the torques and the cage speed have settled
+        # (kegel.dynamics.settling); otherwise the figures are kept and the point says why
+        "converged": bool(res.finished and st["settled"]),
+        **({} if res.finished and st["settled"] else {"failure": _not_settled(st, dyn.duration_s)}),
+        "steady_window_s": [st["window_start_s"], st["window_end_s"]],
+        "steady_drift": st["drift_relative"],
         "runtime_s": res.runtime_s,
         "lubricant_state": state.as_dict(),
         "dynamic": {"steady": st, "stats": res.stats, "revolutions": res.revolutions,
                     "wall_time_per_revolution_s": res.runtime_s / res.revolutions if res.revolutions else None,
                     "files": files},
     }
+
+
+def _not_settled(steady: dict[str, Any], duration_s: float) -> str:
+    """The failure text of a dynamic point whose signals have not settled (its figures are the
+    means over the last part of the run: not a steady answer)."""
+    info = steady["settling"]
+    need = 3 * info["window_s"] + info["hold_s"]
+    return (f"the dynamic run has not settled: {info['reason']}; the figures are the means over "
+            f"{steady['window_start_s'] * 1e3:.4g}-{steady['window_end_s'] * 1e3:.4g} ms, not a steady answer. "
+            f"The steady test needs {need * 1e3:.3g} ms of settled running after the last speed or load change: "
+            f"lengthen dynamic.duration (now {duration_s * 1e3:.4g} ms)")
 
 
 def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
@@ -562,7 +633,8 @@ CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_
                "cage_slip", "power_input_W", "power_balance_error", "start")
 CSV_DERIVED = ("Lambda_min", "Lambda_min_contact", "hydraulic_source", "hydraulic_inner_ring_Nm",
                "hydraulic_outer_ring_Nm", "hydraulic_cage_Nm", "skf_rolling_sliding_Nm", "skf_drag_Nm",
-               "skf_total_Nm", "warnings")
+               "skf_total_Nm", "supply_inlet_gap_ratio_inner", "supply_inlet_gap_ratio_outer",
+               "supply_rolling_force_factor_inner", "supply_rolling_force_factor_outer", "warnings")
 
 
 def _csv_row(p: dict[str, Any]) -> list[Any]:
@@ -577,6 +649,9 @@ def _csv_row(p: dict[str, Any]) -> list[Any]:
                hyd.get("outer_ring_Nm", (tq.get("outer_ring") or {}).get("total")),
                hyd.get("cage_Nm", (tq.get("cage") or {}).get("total")),
                skf.get("rolling_sliding_Nm"), skf.get("drag_Nm"), skf.get("total_Nm"),
+               *((p.get("lubricant_supply") or {}).get(k) for k in (
+                   "inlet_gap_ratio_inner", "inlet_gap_ratio_outer", "rolling_force_factor_inner",
+                   "rolling_force_factor_outer")),
                "; ".join(w["code"] for w in p.get("warnings", ()))]
     row = [p.get(c) for c in CSV_COLUMNS] + derived
     row += [(p.get("torque_by_contact_Nm") or {}).get(c) for c in CONTACTS_WITH_CAGE]

@@ -36,7 +36,8 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
                                              # or auto (with tolerance = "1 %"): kegel chooses
     # slices = 30, slice_model = "alternative_slicing", rib_model = "cell", rib_cells = 32,
     # cage = true, solution = "quasi_static", hydraulic = "correlation" (or "cfd" with
-    # cfd_results = "results/cfd")
+    # cfd_results = "results/cfd"), lubricant_supply = "kinematic_replenishment" (or "flooded"),
+    # contact_film_limit = "0.2 mm" (the contact / CFD boundary; default: none)
 
     [dynamic]                                # optional, for solution = "dynamic"
     duration = "20 ms"                       # simulated time per operating point
@@ -55,9 +56,9 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
 
 A study compares lubrications and hydraulic-loss methods at the same operating points: a
 ``[study]`` table replaces ``[lubrication]`` (and ``model.hydraulic``); the contact friction is
-solved once per operating point (kegel's contact model does not depend on the oil level; a
-starved inlet is ``model.inlet_gap_ratio``) and every lubrication x method pair adds its
-hydraulic loss::
+solved once per operating point and lubrication (the raceway contacts' inlet supply depends on
+the lubrication: :mod:`kegel.supply`) and every lubrication x method pair adds its hydraulic
+loss::
 
     [study]
     lubrication = ["flooded", "shaft_center", "minimum_quantity"]   # oil levels as above, or
@@ -86,6 +87,7 @@ from .data import BearingData, LubricantData, MaterialData, load_bearing, load_l
 from .errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
+from .supply import SUPPLY_MODELS
 from .tribology import ROLLING_THERMAL_MODELS
 from .units import RPM_TO_RAD_S, parse_quantity
 
@@ -117,6 +119,9 @@ MAX_OPERATING_POINTS = 100_000
 MAX_DYNAMIC_DURATION_S = 10.0
 MIN_OUTPUT_INTERVAL_S = 1e-6
 MAX_DYNAMIC_OUTPUTS = 200_000
+#: Largest contact / hydraulic boundary g (``model.contact_film_limit``): a film height beyond
+#: 10 mm is no longer near a line contact of any bearing kegel models.
+MAX_CONTACT_FILM_LIMIT_M = 0.01
 
 _ALLOWED: dict[str, set[str]] = {
     "scene": {"name", "description"},
@@ -128,7 +133,8 @@ _ALLOWED: dict[str, set[str]] = {
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
-              "cfd_results", "tolerance", "rolling_thermal", "inlet_gap_ratio"},
+              "cfd_results", "tolerance", "rolling_thermal", "inlet_gap_ratio", "lubricant_supply",
+              "contact_film_limit"},
     "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
@@ -183,7 +189,17 @@ class Fidelity:
         (default), ``"zhu_cheng"`` or ``"off"`` (see :class:`kegel.FrictionData`).
     inlet_gap_ratio
         Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
-        the inlet oil gap over the fully flooded film, >= 2; 0 (default) = fully flooded.
+        the inlet oil gap over the fully flooded film, >= 2; 0 (default) = fully flooded. A
+        constant for every raceway contact, combined with the supply (the smaller ratio wins).
+    lubricant_supply
+        The inlet supply of the raceway contacts (:mod:`kegel.supply`): ``"kinematic_replenishment"``
+        (default: SKF's kinematic replenishment factor by lubrication method, speed and viscosity,
+        contacts under the oil surface flooded, mapped onto Biboulet-Houpert's starved inlet) or
+        ``"flooded"`` (every contact fully flooded).
+    contact_film_limit_m
+        The contact / hydraulic boundary g [m] (``model.contact_film_limit = "0.2 mm"``): the
+        contact model owns the oil within film height g of each line contact and cuts its rolling
+        force off there (Eq. 44 with S = g / h); 0 (default) = no cut-off.
     """
 
     name: str
@@ -198,6 +214,8 @@ class Fidelity:
     tolerance: float | None = None
     rolling_thermal: str = "aihara"
     inlet_gap_ratio: float = 0.0
+    lubricant_supply: str = "kinematic_replenishment"
+    contact_film_limit_m: float = 0.0
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -661,6 +679,15 @@ def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> 
             raise reader.error("model.inlet_gap_ratio", v,
                                "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's starvation range)")
         opts["inlet_gap_ratio"] = float(v)
+    if "lubricant_supply" in model:
+        opts["lubricant_supply"] = reader.choice(model, "lubricant_supply", "model", SUPPLY_MODELS, None)
+    if "contact_film_limit" in model:
+        v = model["contact_film_limit"]
+        g = reader.quantity(v, "length", "model.contact_film_limit")
+        if not 0.0 <= g <= MAX_CONTACT_FILM_LIMIT_M:
+            raise reader.error("model.contact_film_limit", v, f"a film height in [0, {MAX_CONTACT_FILM_LIMIT_M * 1e3:g} mm] "
+                               "(0: no cut-off), e.g. \"0.2 mm\"")
+        opts["contact_film_limit_m"] = g
     if opts["solution"] == "dynamic":
         for key, value in DYNAMIC_PRESETS[preset].items():
             if key not in model:

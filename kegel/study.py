@@ -26,12 +26,15 @@ from .correlations import hydraulic_torques
 from .lubricant import lubricant_state
 from .point_warnings import Warning_, liebrecht_warning
 
-__all__ = ["read_study_cfd", "study_csv", "study_plot", "study_rows", "STUDY_FILES"]
+__all__ = ["case_name", "read_study_cfd", "study_csv", "study_plot", "study_rows", "STUDY_FILES"]
 
 #: The summary files a study adds to a run.
 STUDY_FILES = ("study.csv", "study.png")
 
 _METHOD_LABEL = {"none": "no oil bath", "liebrecht": "Liebrecht", "skf": "SKF drag", "cfd": "CFD"}
+#: The raceway contacts' inlet supply in each study row (``supply_`` + key; :mod:`kegel.supply`).
+_SUPPLY_KEYS = ("inlet_gap_ratio_inner", "inlet_gap_ratio_outer", "rolling_force_factor_inner",
+                "rolling_force_factor_outer")
 
 
 def read_study_cfd(scene: Any) -> list[tuple[Path, dict[str, Any]]]:
@@ -44,8 +47,12 @@ def read_study_cfd(scene: Any) -> list[tuple[Path, dict[str, Any]]]:
     return read_cfd_results(st.cfd_results, source=scene.source, key="study.cfd_results")
 
 
-def _case_name(lub: Any) -> str:
+def case_name(lub: Any) -> str:
+    """A study lubrication's name: ``minimum_quantity`` or the oil level as written."""
     return "minimum_quantity" if lub.mode == "minimum_quantity" else lub.oil_level_as_written
+
+
+_case_name = case_name
 
 
 def _cfd_command(scene: Any, point: dict[str, Any], lub: Any) -> str:
@@ -59,8 +66,10 @@ def _cfd_command(scene: Any, point: dict[str, Any], lub: Any) -> str:
 
 def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dict[str, Any]]]) -> list[dict[str, Any]]:
     """The study rows of one operating point's record (``friction_torque_Nm``, speeds,
-    temperature, ``cage_speed_rpm``): per lubrication and method the hydraulic loss at the shaft
-    and the total, with the method's warnings.
+    temperature, ``cage_speed_rpm``; per lubrication its contact friction and inlet supply in
+    ``study_friction`` when the run solved them): per lubrication and method the contact friction,
+    the raceway contacts' supply, the hydraulic loss at the shaft and the total, with the method's
+    warnings.
 
     The minimum-quantity case has no oil bath: one row, method ``none``, hydraulic loss 0.
     """
@@ -76,10 +85,15 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
     wc = float(point.get("cage_speed_rpm", 0.0)) * math.pi / 30 or None
     D = scene.bearing.outer_diameter_m
     rows: list[dict[str, Any]] = []
+    per_case = point.get("study_friction") or {}
     for lub in st.cases:
+        case = per_case.get(_case_name(lub)) or {}
+        sup = case.get("lubricant_supply") or {}
+        friction = float(case.get("friction_torque_Nm", point["friction_torque_Nm"]))
         base = {"lubrication": _case_name(lub), "mode": lub.mode,
                 "oil_level_m": lub.oil_level_m if lub.mode == "oil_bath" else None,
-                "friction_torque_Nm": friction}
+                "friction_torque_Nm": friction,
+                **{f"supply_{k}": sup.get(k) for k in _SUPPLY_KEYS}}
         if lub.mode == "minimum_quantity":
             rows.append({**base, "method": "none", "status": "no oil bath", "hydraulic_torque_Nm": 0.0,
                          "total_torque_Nm": friction, "error_rel": None, "note": "", "warnings": []})
@@ -132,7 +146,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
 
 
 _CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
-                "lubrication", "oil_level_m", "method", "status", "friction_torque_Nm", "hydraulic_torque_Nm",
+                "lubrication", "oil_level_m", "method", "status", "friction_torque_Nm",
+                *(f"supply_{k}" for k in _SUPPLY_KEYS), "hydraulic_torque_Nm",
                 "total_torque_Nm", "error_rel", "converged", "note", "command", "warnings")
 
 
@@ -197,7 +212,7 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
     combos = sorted({combo(p) for p in pts}, key=lambda t: tuple((v is None, v or 0.0) for v in t))
     cases = list(meta["cases"])
     colours = {c: plt.get_cmap("tab10")(i % 10) for i, c in enumerate(cases)}
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
+    fig, (ax, ax2, ax3) = plt.subplots(1, 3, figsize=(17, 4.8), gridspec_kw={"width_ratios": (1.0, 1.0, 0.7)})
     all_x = [xaxis.value(p) for p in pts]
 
     for ci, k in enumerate(combos):
@@ -213,6 +228,21 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
             for r in p.get("study") or ():
                 if (r["lubrication"], r["method"]) not in keys:
                     keys.append((r["lubrication"], r["method"]))
+        for case in dict.fromkeys(c for c, _ in keys):
+            # the raceway contacts' inlet supply of this lubrication: Biboulet-Houpert's rolling
+            # force factor of the inner (solid) and outer (dashed) raceway (kegel.supply)
+            sx, fi, fo = [], [], []
+            for p in in_combo:
+                r = next((r for r in p.get("study") or () if r["lubrication"] == case), None)
+                if r is None or r.get("supply_rolling_force_factor_inner") is None:
+                    continue
+                sx.append(xaxis.value(p))
+                fi.append(r["supply_rolling_force_factor_inner"])
+                fo.append(r["supply_rolling_force_factor_outer"])
+            if sx:
+                colour = _shade(colours[case], ci, len(combos))
+                ax3.plot(sx, fi, ls="-", marker="o", ms=4, color=colour, label=f"{case.replace('_', ' ')}: inner" + suffix)
+                ax3.plot(sx, fo, ls="--", marker="s", ms=4, color=colour, label=f"{case.replace('_', ' ')}: outer" + suffix)
         for case, m in keys:
             xs_, tot, hyd, err, interp = [], [], [], [], []
             for p in in_combo:
@@ -235,8 +265,14 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
                 if any(interp):
                     ax2.plot([a for a, i in zip(xs_, interp) if i], [h * 1e3 for h, i in zip(hyd, interp) if i],
                              ls="none", marker=_MARKER[m], mfc="white", mec=colour, ms=7)
-    for a in (ax, ax2):
+    for a in (ax, ax2, ax3):
         _style_x(a, all_x)
+    ax3.set_xlabel(xaxis.axis_label)
+    ax3.set_ylabel("rolling-force factor of the oil supply [-]")
+    ax3.set_ylim(0.0, 1.05)
+    ax3.set_title("raceway contacts' oil supply (1: flooded; kegel.supply)", fontsize=9)
+    if ax3.lines:
+        ax3.legend(fontsize=7)
     ax.set_xlabel(xaxis.axis_label)
     ax.set_ylabel("total torque at the shaft [N m]")
     ax.set_title("friction + hydraulic loss", fontsize=9)

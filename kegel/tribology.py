@@ -70,12 +70,32 @@ class FrictionData:
     #: Hoeprich 1991 apply it to the rolling force) or ``"off"``.
     rolling_thermal: str = "aihara"
     #: Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
-    #: inlet oil gap over the fully flooded film, >= 2; 0 = fully flooded (default).
+    #: inlet oil gap over the fully flooded film, >= 2; 0 = fully flooded (default). A constant for
+    #: both raceways (``model.inlet_gap_ratio``), combined with the supply below: the smaller wins.
     inlet_gap_ratio: float = 0.0
+    #: The lubricant supply's inlet ratio of the inner (cone) and outer (cup) raceway contacts
+    #: (:func:`kegel.supply.lubricant_supply`, set per operating point); 0 = fully flooded.
+    inlet_gap_ratio_inner: float = 0.0
+    inlet_gap_ratio_outer: float = 0.0
+    #: The contact / hydraulic boundary g [m] (``model.contact_film_limit``): the rolling force is
+    #: cut off where the film reaches g (Eq. 44 with S = g / h per slice); 0 = no cut-off.
+    contact_film_limit_m: float = 0.0
 
     def model_options(self) -> dict[str, Any]:
         """The rolling-resistance model options, as recorded with every result."""
-        return {"rolling_thermal": self.rolling_thermal, "inlet_gap_ratio": self.inlet_gap_ratio}
+        return {"rolling_thermal": self.rolling_thermal, "inlet_gap_ratio": self.inlet_gap_ratio,
+                "contact_film_limit_m": self.contact_film_limit_m}
+
+    def ring_inlet_gap_ratios(self) -> tuple[float, float]:
+        """The inlet ratios applied to the inner and outer raceway contacts: for each, the smaller
+        (more restrictive) of the constant ``inlet_gap_ratio`` and the supply's, 0 when both are
+        flooded."""
+        def combine(a: float, b: float) -> float:
+            vals = [v for v in (a, b) if v > 0.0]
+            return min(vals) if vals else 0.0
+
+        return (combine(self.inlet_gap_ratio, self.inlet_gap_ratio_inner),
+                combine(self.inlet_gap_ratio, self.inlet_gap_ratio_outer))
 
     def core(self, lubricant: LubricantData) -> "_core.tribology.FrictionParameters":
         """Checked C++ parameters, with the limiting shear stress of ``lubricant`` and the
@@ -85,7 +105,8 @@ class FrictionData:
                                   f"one of {', '.join(ROLLING_THERMAL_MODELS)}")
         v = T.FrictionParameterValues()
         v.rolling_thermal = getattr(T.RollingThermal, self.rolling_thermal)
-        v.inlet_gap_ratio = self.inlet_gap_ratio
+        v.inlet_gap_ratio_inner, v.inlet_gap_ratio_outer = self.ring_inlet_gap_ratios()
+        v.contact_film_limit_m = self.contact_film_limit_m
         v.tau_L0_Pa = lubricant.limiting_shear_stress_tau0_Pa
         v.gamma_L = lubricant.limiting_shear_stress_gamma
         for name in ("mu_s", "mu_d", "v_s_m_s", "v_d_m_s", "c_r", "e_r", "a_v", "d_max_Ns_m", "delta_max_m",
@@ -186,7 +207,8 @@ class ContactFriction:
 _RESULT_FIELDS = (
     "half_width_m", "max_pressure_Pa", "mean_pressure_Pa", "film_isothermal_m", "thermal_factor",
     "film_m", "Lambda", "phi", "contact_temperature_K", "eta_contact_Pas", "tau_L_Pa", "tau_ehl_Pa", "mu_solid",
-    "sliding_speed_m_s", "entrainment_speed_m_s", "F_ehl_rolling_N", "M_solid_rolling_Nm",
+    "sliding_speed_m_s", "entrainment_speed_m_s", "F_ehl_rolling_N", "rolling_starvation_factor",
+    "inlet_gap_ratio", "M_solid_rolling_Nm",
     "M_hysteresis_Nm", "P_ehl_sliding_W", "P_solid_sliding_W",
 )
 
@@ -288,6 +310,7 @@ def evaluate_raceway_contact(
         s.reduced_radius_m = R
         s.u2_x_m_s = u_mean * (1.0 + 0.5 * slide_to_roll)  # ring
         s.u1_x_m_s = u_mean * (1.0 - 0.5 * slide_to_roll)  # roller
+        s.outer_ring = contact == "outer"  # its raceway's inlet supply
         r = T.evaluate_slice(s, pair, state, fp)
         row = {"xi_m": float(xi), "load_N": s.load_N, "width_m": width, "reduced_radius_m": float(R),
                "u_roller_m_s": s.u1_x_m_s, "u_ring_m_s": s.u2_x_m_s}

@@ -40,7 +40,9 @@ void bind_slice(nb::module_& m) {
       .def_rw("gold_C1_Pa_K2", &V::gold_C1_Pa_K2)
       .def_rw("gold_C2_Pa_K", &V::gold_C2_Pa_K)
       .def_rw("rolling_thermal", &V::rolling_thermal)
-      .def_rw("inlet_gap_ratio", &V::inlet_gap_ratio);
+      .def_rw("inlet_gap_ratio_inner", &V::inlet_gap_ratio_inner)
+      .def_rw("inlet_gap_ratio_outer", &V::inlet_gap_ratio_outer)
+      .def_rw("contact_film_limit_m", &V::contact_film_limit_m);
   nb::class_<FrictionParameters>(m, "FrictionParameters", "Checked friction-law parameters.")
       .def(nb::init<const V&>(), "values"_a)
       .def_prop_ro("values", &FrictionParameters::values)
@@ -67,7 +69,8 @@ void bind_slice(nb::module_& m) {
       .def_rw("u2_x_m_s", &SliceInput::u2_x_m_s)
       .def_rw("u2_y_m_s", &SliceInput::u2_y_m_s)
       .def_rw("penetration_m", &SliceInput::penetration_m)
-      .def_rw("normal_velocity_m_s", &SliceInput::normal_velocity_m_s);
+      .def_rw("normal_velocity_m_s", &SliceInput::normal_velocity_m_s)
+      .def_rw("outer_ring", &SliceInput::outer_ring);
   using R = SliceResult;
   nb::class_<R>(m, "SliceResult", "Forces and moments of one slice by mechanism (on the roller).")
       .def_ro("in_contact", &R::in_contact)
@@ -92,6 +95,7 @@ void bind_slice(nb::module_& m) {
       .def_ro("F_ehl_rolling_N", &R::F_ehl_rolling_N)
       .def_ro("rolling_thermal_factor", &R::rolling_thermal_factor)
       .def_ro("rolling_starvation_factor", &R::rolling_starvation_factor)
+      .def_ro("inlet_gap_ratio", &R::inlet_gap_ratio)
       .def_ro("M_solid_rolling_Nm", &R::M_solid_rolling_Nm)
       .def_ro("M_hysteresis_Nm", &R::M_hysteresis_Nm)
       .def_ro("F_damping_N", &R::F_damping_N)

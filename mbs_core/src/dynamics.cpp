@@ -180,7 +180,8 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       const Vec3 vf = v_frame(g.p_RC);
       const Vec3 v1 = v_roller(g.p_RC) - vf;
       const Vec3 v2 = (outer ? Vec3::Zero() : ring.v_at(g.p_RC)) - vf;
-      const SliceInput in = make_slice_input(g, q, wslice, v1, v2);
+      SliceInput in = make_slice_input(g, q, wslice, v1, v2);
+      in.outer_ring = outer;  // its raceway's inlet supply
       SliceResult s;
       evaluate_slice(in, m.raceway(), m.lubricant(), m.slice_friction(), s);
       const Vec3 ft = (s.F_ehl_sliding_N[0] + s.F_solid_sliding_N[0]) * g.t_roll_R +

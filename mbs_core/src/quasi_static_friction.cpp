@@ -75,6 +75,7 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
       in.u1_y_m_s = u1.dot(c.t_line);
       in.u2_x_m_s = u2.dot(c.t_roll);
       in.u2_y_m_s = u2.dot(c.t_line);
+      in.outer_ring = c.contact == BearingFriction::kOuter;  // its raceway's inlet supply
       evaluate_slice(in, race, lub, fp, s);
     }
     // tangential force on the roller: sliding (Eq. 36)

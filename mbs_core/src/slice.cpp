@@ -1,6 +1,7 @@
 #include "kegel/core/slice.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "kegel/core/checks.hpp"
 
@@ -32,8 +33,14 @@ FrictionParameters::FrictionParameters(const Values& v) : v_(v) {
   }
   const int rt = static_cast<int>(v.rolling_thermal);
   if (rt < 0 || rt > 2) fail(o, "rolling_thermal", rt, "0 (off), 1 (Aihara) or 2 (Zhu-Cheng)");
-  if (!(v.inlet_gap_ratio == 0.0 || (std::isfinite(v.inlet_gap_ratio) && v.inlet_gap_ratio >= 2.0))) {
-    fail(o, "inlet_gap_ratio", v.inlet_gap_ratio, "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's range)");
+  for (const auto& [name, S] : {std::pair{"inlet_gap_ratio_inner", v.inlet_gap_ratio_inner},
+                                std::pair{"inlet_gap_ratio_outer", v.inlet_gap_ratio_outer}}) {
+    if (!(S == 0.0 || (std::isfinite(S) && S >= 2.0))) {
+      fail(o, name, S, "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's range)");
+    }
+  }
+  if (!(v.contact_film_limit_m == 0.0 || (std::isfinite(v.contact_film_limit_m) && v.contact_film_limit_m > 0.0))) {
+    fail(o, "contact_film_limit_m", v.contact_film_limit_m, "0 (no cut-off) or a film height > 0");
   }
   law_ = tribology::CubicFrictionLaw{v.mu_s, v.mu_d, v.v_s_m_s, v.v_d_m_s};
 }
@@ -171,7 +178,17 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
       case RollingThermal::ZhuCheng: out.rolling_thermal_factor = out.thermal_factor; break;
       case RollingThermal::Off: out.rolling_thermal_factor = 1.0; break;
     }
-    out.rolling_starvation_factor = tribology::biboulet_houpert_starvation_factor(v.inlet_gap_ratio);
+    // Inlet of the rolling force (Biboulet-Houpert Part 1, Eq. 44): the supply's ratio of this
+    // raceway, and the contact / hydraulic boundary g as S = g / h (the gap at the inlet meniscus
+    // over the flooded film; h the isothermal Moes film of the slice, see the parameter's note);
+    // the smaller S, the more restrictive inlet, wins.
+    double S = in.outer_ring ? v.inlet_gap_ratio_outer : v.inlet_gap_ratio_inner;
+    if (v.contact_film_limit_m > 0.0 && out.film_isothermal_m > 0.0) {
+      const double S_g = v.contact_film_limit_m / out.film_isothermal_m;
+      if (!(S > 0.0) || S_g < S) S = S_g;
+    }
+    out.inlet_gap_ratio = S;
+    out.rolling_starvation_factor = tribology::biboulet_houpert_starvation_factor(S);
     out.F_ehl_rolling_N = (1.0 - phi) * out.rolling_thermal_factor * out.rolling_starvation_factor *
                           tribology::biboulet_houpert_rolling_force_N(lub.eta0_Pas, uav, R, in.width_m, Q, E);
   }

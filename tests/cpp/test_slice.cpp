@@ -197,7 +197,7 @@ TEST_F(Fixture, RollingForceAppliesTheThermalAndStarvationFactors) {
   auto with = [&](kegel::RollingThermal t, double S) {
     auto v = params();
     v.rolling_thermal = t;
-    v.inlet_gap_ratio = S;
+    v.inlet_gap_ratio_inner = S;
     kegel::SliceResult r;
     kegel::evaluate_slice(slice(Q, u, u), sp, state, kegel::FrictionParameters(v), r);
     return r;
@@ -215,8 +215,56 @@ TEST_F(Fixture, RollingForceAppliesTheThermalAndStarvationFactors) {
   const auto st = with(kegel::RollingThermal::Off, 10.0);
   EXPECT_DOUBLE_EQ(st.rolling_starvation_factor, tr::biboulet_houpert_starvation_factor(10.0));
   EXPECT_NEAR(st.F_ehl_rolling_N, off.F_ehl_rolling_N * st.rolling_starvation_factor, 1e-12 * bh);
+  EXPECT_DOUBLE_EQ(st.inlet_gap_ratio, 10.0);
   // a starvation ratio below Biboulet-Houpert's range is rejected
   auto bad = params();
-  bad.inlet_gap_ratio = 1.0;
+  bad.inlet_gap_ratio_inner = 1.0;
   EXPECT_THROW(kegel::FrictionParameters{bad}, std::invalid_argument);
+  bad = params();
+  bad.inlet_gap_ratio_outer = -3.0;
+  EXPECT_THROW(kegel::FrictionParameters{bad}, std::invalid_argument);
+  bad = params();
+  bad.contact_film_limit_m = -1e-4;
+  EXPECT_THROW(kegel::FrictionParameters{bad}, std::invalid_argument);
+}
+
+// The supply is chosen by the slice's raceway, and the contact / hydraulic boundary g cuts the
+// inlet at S = g / h (h the isothermal flooded film of the slice); the smaller S wins.
+TEST_F(Fixture, InletSupplyByRingAndFilmLimit) {
+  namespace tr = kegel::tribology;
+  const double Q = 50.0, u = 5.0;
+  auto run = [&](double S_in, double S_out, double g, bool outer) {
+    auto v = params();
+    v.rolling_thermal = kegel::RollingThermal::Off;
+    v.inlet_gap_ratio_inner = S_in;
+    v.inlet_gap_ratio_outer = S_out;
+    v.contact_film_limit_m = g;
+    auto in = slice(Q, u, u);
+    in.outer_ring = outer;
+    kegel::SliceResult r;
+    kegel::evaluate_slice(in, sp, state, kegel::FrictionParameters(v), r);
+    return r;
+  };
+  const auto flooded = run(0.0, 0.0, 0.0, false);
+  EXPECT_EQ(flooded.inlet_gap_ratio, 0.0);
+  EXPECT_EQ(flooded.rolling_starvation_factor, 1.0);
+  // the ring selects its own ratio
+  EXPECT_DOUBLE_EQ(run(10.0, 50.0, 0.0, false).inlet_gap_ratio, 10.0);
+  EXPECT_DOUBLE_EQ(run(10.0, 50.0, 0.0, true).inlet_gap_ratio, 50.0);
+  EXPECT_NEAR(run(10.0, 50.0, 0.0, true).F_ehl_rolling_N,
+              flooded.F_ehl_rolling_N * tr::biboulet_houpert_starvation_factor(50.0), 1e-12);
+  // the film limit alone: S = g / h_isothermal, with Eq. 44 by hand at that S
+  const double h = flooded.film_isothermal_m;
+  const double g = 100.0 * h;
+  const auto cut = run(0.0, 0.0, g, false);
+  EXPECT_NEAR(cut.inlet_gap_ratio, 100.0, 1e-9);
+  const double eq44 = (1e4 + 162.8e2) / (1e4 + 193.1e2 + 1257.0);  // 0.8598
+  EXPECT_NEAR(cut.rolling_starvation_factor, eq44, 1e-12);
+  EXPECT_NEAR(cut.F_ehl_rolling_N, eq44 * flooded.F_ehl_rolling_N, 1e-12);
+  // the more restrictive inlet wins: supply 50 < 100 from g; supply 500 > 100 from g
+  EXPECT_DOUBLE_EQ(run(50.0, 0.0, g, false).inlet_gap_ratio, 50.0);
+  EXPECT_NEAR(run(500.0, 0.0, g, false).inlet_gap_ratio, 100.0, 1e-9);
+  // sliding friction and film do not change with the inlet of the rolling force
+  EXPECT_DOUBLE_EQ(cut.film_m, flooded.film_m);
+  EXPECT_DOUBLE_EQ(cut.F_ehl_sliding_N[0], flooded.F_ehl_sliding_N[0]);
 }

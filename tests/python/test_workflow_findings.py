@@ -530,22 +530,26 @@ def test_finding9_the_readme_commands_work(tmp_path):
 
 
 def test_finding2_minimum_quantity_friction_says_its_contacts_are_flooded():
-    """Outputs never mislead: a minimum-quantity point (a scene's or a study case's) carries the
-    warning that its contact friction is that of fully flooded contacts; with a starved inlet
-    (model.inlet_gap_ratio) or an oil bath alone it does not."""
+    """Outputs never mislead: a minimum-quantity point (a scene's or a study case's) whose contacts
+    are fully flooded (model.lubricant_supply = "flooded") carries the warning that its contact
+    friction is that of fully flooded contacts; with a starved inlet (model.inlet_gap_ratio), the
+    default supply model (kegel.supply) or an oil bath alone it does not."""
     from kegel.run import run_scene
     from kegel.scene import scene_from_dict
 
     def codes(**over):
         raw = {"scene": {"name": "mql"}, "bearing": {"designation": "32216"}, "lubricant": {"name": "FVA3"},
                "operating": {"axial_load": "6 kN", "speed": "2000 rpm", "temperature": "50 degC"},
-               "lubrication": {"mode": "minimum_quantity"}, "model": {"fidelity": "fast"}, **over}
+               "lubrication": {"mode": "minimum_quantity"},
+               "model": {"fidelity": "fast", "lubricant_supply": "flooded"}, **over}
         raw = {k: v for k, v in raw.items() if v is not None}
         (p,) = run_scene(scene_from_dict(raw), write=False, progress=False).points
         return {w["code"] for w in p["warnings"]}
 
     assert "contacts_fully_flooded" in codes()
-    assert "contacts_fully_flooded" not in codes(model={"fidelity": "fast", "inlet_gap_ratio": 5.0})
+    assert "contacts_fully_flooded" not in codes(model={"fidelity": "fast", "lubricant_supply": "flooded",
+                                                        "inlet_gap_ratio": 5.0})
+    assert "contacts_fully_flooded" not in codes(model={"fidelity": "fast"})  # the supply model's default
     assert "contacts_fully_flooded" not in codes(lubrication={"mode": "oil_bath", "oil_level": "flooded"})
     study = {"lubrication": ["flooded", "minimum_quantity"], "hydraulic": ["liebrecht"]}
     assert "contacts_fully_flooded" in codes(lubrication=None, study=study)

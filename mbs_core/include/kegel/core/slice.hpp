@@ -42,8 +42,15 @@ class FrictionParameters {
     double gold_C2_Pa_K = 0.0;     ///< Gold et al. (Eq. 9); 0 switches compression heating off
     RollingThermal rolling_thermal = RollingThermal::Aihara;  ///< thermal factor of the EHL rolling force
     /// Starvation of the raceway contacts' rolling resistance (Biboulet-Houpert Part 1, Eq. 44):
-    /// the inlet oil gap over the fully flooded film, S >= 2; 0 = fully flooded
-    double inlet_gap_ratio = 0.0;
+    /// the inlet oil gap over the fully flooded film, S >= 2; 0 = fully flooded. One value per
+    /// raceway (the lubricant supply of kegel/supply.py: inner = cone, outer = cup).
+    double inlet_gap_ratio_inner = 0.0;
+    double inlet_gap_ratio_outer = 0.0;
+    /// The contact / hydraulic boundary g [m]: the contact model owns the oil within film height
+    /// g of each line contact, so its rolling force is cut off where the gap reaches g
+    /// (Biboulet-Houpert Eq. 44 with S = g / h, h the slice's isothermal flooded film);
+    /// combined with the supply, the more restrictive inlet (the smaller S) wins. 0 = no cut-off.
+    double contact_film_limit_m = 0.0;
   };
   /// True when Eq. 9 (compression heating of the contact lubricant) is active.
   bool compression_heating() const noexcept { return v_.gold_C1_Pa_K2 > 0.0 && v_.gold_C2_Pa_K > 0.0; }
@@ -99,6 +106,7 @@ struct SliceInput {
   double u2_y_m_s = 0.0;         ///< ring surface velocity, along the contact line
   double penetration_m = 0.0;    ///< for the damping law (Eq. 2)
   double normal_velocity_m_s = 0.0;  ///< approach velocity, for damping (Eq. 1)
+  bool outer_ring = false;       ///< a slice of the outer (cup) raceway: selects its inlet supply
 };
 
 /// Everything one slice contributes, by mechanism. Forces act on the roller (body 1).
@@ -129,6 +137,7 @@ struct SliceResult {
   double F_ehl_rolling_N = 0.0;       ///< (1 - phi) x thermal x starvation x Biboulet-Houpert (the seed's Eq. 16, corrected)
   double rolling_thermal_factor = 1.0;  ///< thermal factor applied to the EHL rolling force
   double rolling_starvation_factor = 1.0;  ///< starvation factor applied to the EHL rolling force
+  double inlet_gap_ratio = 0.0;       ///< S of Eq. 44 applied (supply or film limit, the smaller); 0 = flooded
   double M_solid_rolling_Nm = 0.0;    ///< phi x Eq. 19
   double M_hysteresis_Nm = 0.0;       ///< Eq. 20 (material, not weighted)
   // Normal direction
