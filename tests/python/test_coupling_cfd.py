@@ -1,0 +1,187 @@
+"""Flow forces from the shipped CFD results acting in the dynamics (issue 29, item 5).
+
+The checks are physics, not the fit against itself: the power the laws take from the bodies
+through the C++ model plus the rings' churning is the CFD's loss (the CFD computed its loss from
+each roller's force and moment, the laws are fitted to the rollers' sums); a drag of the wrong sign
+is an error; the exponent fit against a hand calculation; at light load the oil drag slows the
+cage by about what a hand estimate of the contacts' traction slope gives; the results do not
+depend on the output interval.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import kegel
+from kegel.coupling import flow_forces_from_cfd, read_cfd_results
+from kegel.coupling.flow_forces import (PowerLaw, body_drags, cfd_sweep, fit_exponent, orbit_radius_m,
+                                        roller_axis_z)
+from kegel.dynamics import D, dynamic_model
+from kegel.errors import KegelInputError
+from kegel.tribology import load_friction
+
+REPO = Path(__file__).resolve().parents[2]
+CFD = REPO / "benchmarks" / "results" / "cfd"
+RPM = math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def b32208():
+    b = kegel.load_bearing("32208")
+    m = kegel.load_material("bearing_steel")
+    return kegel.derive_geometry(b, m), b, m, kegel.load_lubricant("FVA3")
+
+
+@pytest.fixture(scope="module")
+def runs():
+    return read_cfd_results(CFD)
+
+
+def test_the_exponent_fit_against_a_hand_calculation():
+    # on a power law: exact, residuals zero
+    n, c, res = fit_exponent([1.0, 2.0, 4.0], [-3.0, -3.0 * 2 ** 1.5, -3.0 * 4 ** 1.5])
+    assert n == pytest.approx(1.5, abs=1e-12) and c == pytest.approx(3.0, rel=1e-12)
+    assert max(map(abs, res)) < 1e-12
+    # three points off a line in log-log axes (natural logs): x = 0, ln 2, ln 4 = 0, L, 2L;
+    # y = 0, 2L, 2L. By hand: slope = sum((x - xm)(y - ym)) / sum((x - xm)^2) = (2L^2) / (2L^2) = 1,
+    # intercept ym - xm = 4L/3 - L = L/3, so c = 2^(1/3); residuals c s^n / v - 1
+    n, c, res = fit_exponent([1.0, 2.0, 4.0], [1.0, 4.0, 4.0])
+    assert n == pytest.approx(1.0, abs=1e-12) and c == pytest.approx(2 ** (1 / 3), rel=1e-12)
+    assert res == pytest.approx([2 ** (1 / 3) - 1, 2 ** (1 / 3) / 2 - 1, 2 ** (1 / 3) - 1], rel=1e-12)
+    # the law: opposes the speed, smooth through zero
+    law = PowerLaw(value_ref=2.0, speed_ref=10.0, exponent=0.8, smoothing_speed=1e-3)
+    assert law(10.0) == pytest.approx(-2.0, rel=1e-8) and law(-20.0) == pytest.approx(2.0 * 2 ** 0.8, rel=1e-8)
+    assert law(0.0) == 0.0
+
+
+def _cfd_state_power(model, g, kin, elements) -> float:
+    """The power the force elements take from the bodies (external_power_W of the C++ model),
+    rollers at their quasi-static places orbiting at the CFD's cage speed and spinning at its spin."""
+    qs = kegel._core.quasi_static.BearingData(model[1])
+    y = np.asarray(D.initial_state(model[0], qs, kin["cage_rad_s"], [kin["roller_spin_rad_s"]] * g.roller_count))
+    d = D.RingDrive()
+    d.time_s, d.speed_rad_s, d.axial_N = [0.0], [kin["inner_ring_rad_s"]], 0.0
+    st, f, out = D.rhs(model[0], d, 0.0, y, elements)
+    assert st == 0
+    return out["external_power_W"]
+
+
+@pytest.mark.parametrize("level", ["flooded", "shaft_center"])
+def test_bodies_plus_ring_churning_is_the_cfd_loss(b32208, runs, level):
+    """At each shipped CFD point: the power the fitted laws take from rollers and cage through the
+    C++ model, plus the oil's torque on the inner ring and shaft, is the CFD's loss torque (which
+    the CFD computed from every roller's force and moment, F . v + M . w, not from the sums the
+    laws are fitted to)."""
+    g, b, m, lub = b32208
+    model = dynamic_model(g, b, m, lub, load_friction(), temperature_K=323.15, slices=8)
+    mine = [(f, d) for f, d in runs if (level == "flooded") == (d["point"]["oil_level_m"] is None)]
+    assert len(mine) == 4
+    for f, d in mine:
+        law = flow_forces_from_cfd(d, g, sweep=runs, source=str(f))
+        kin = d["kinematics"]
+        P = _cfd_state_power(model, g, kin, [law.element()])
+        t = d["torques_Nm"]
+        churning = -(t["inner_ring"]["total"] + t["shaft"]["total"])
+        total = P / kin["inner_ring_rad_s"] + churning
+        # the rollers sit at their quasi-static places, um from the CFD's nominal ones
+        assert total == pytest.approx(d["loss_torque_at_shaft_Nm"], rel=2e-3), f
+        # and the same in closed form
+        P2 = law.body_power_W(kin["cage_rad_s"], kin["roller_spin_rad_s"], roller_axis_z(g))
+        assert P2 / kin["inner_ring_rad_s"] + churning == pytest.approx(d["loss_torque_at_shaft_Nm"], rel=1e-6)
+        # the exponents and their residuals are reported; the levels are the point's own
+        prov = law.provenance
+        assert len(prov["sweep_files"]) == 4 and set(prov["exponents"]) == {"orbit", "spin", "cage"}
+        assert all(0.0 <= r < 0.2 for r in prov["max_abs_residual"].values())
+
+
+def test_the_shipped_sweeps_give_these_exponents(b32208, runs):
+    """The exponents of the shipped sweeps (documented in docs/cfd.md, Coupling); the flooded
+    orbit drag grows with the square of the speed (form drag, Re = u D_w / nu ~ 1e3)."""
+    g = b32208[0]
+    got = {}
+    for f, d in runs:
+        if abs(d["point"]["speed_rad_s"] - 2000 * RPM) < 1:
+            key = "flooded" if d["point"]["oil_level_m"] is None else "shaft_center"
+            got[key] = flow_forces_from_cfd(d, g, sweep=runs, source=str(f)).provenance["exponents"]
+    assert got["flooded"] == pytest.approx({"orbit": 2.01, "spin": 1.21, "cage": 0.81}, abs=0.01)
+    assert got["shaft_center"] == pytest.approx({"orbit": 1.72, "spin": 0.99, "cage": 0.84}, abs=0.01)
+
+
+def _copy_sweep(tmp_path: Path, level: str = "flooded") -> list[Path]:
+    out = []
+    # by speed: 500, 1000, 2000, 4000 rpm
+    for src in sorted(CFD.glob(f"32208_*rpm_{level}_*/results.json"), key=lambda p: int(p.parent.name.split("_")[1][:-3])):
+        dst = tmp_path / src.parent.name / "results.json"
+        dst.parent.mkdir(parents=True)
+        shutil.copy(src, dst)
+        out.append(dst)
+    return out
+
+
+@pytest.mark.parametrize("key,path", [("cage", ("cage", "moment_Nm", 2)),
+                                      ("spin", ("torques_Nm", "rollers_spin_sum", "total")),
+                                      ("orbit", ("torques_Nm", "rollers_about_bearing_axis", "total"))])
+def test_a_drag_of_the_wrong_sign_is_an_error(b32208, tmp_path, key, path):
+    g = b32208[0]
+    files = _copy_sweep(tmp_path)
+    bad = files[1]  # 1000 rpm: not the point's own result, a member of its sweep
+    d = json.loads(bad.read_text())
+    node = d
+    for p in path[:-1]:
+        node = node[p]
+    if key == "orbit":  # drive the rollers along their orbit: a moment about the axis with the cage's sign
+        node[path[-1]] = abs(node[path[-1]]) + 1.0 * abs(d["torques_Nm"]["rollers_spin_sum"]["total"])
+    else:
+        node[path[-1]] = -node[path[-1]]
+    bad.write_text(json.dumps(d))
+    anchor = json.loads(files[2].read_text())
+    with pytest.raises(KegelInputError) as exc:
+        flow_forces_from_cfd(anchor, g, sweep=tmp_path, source=str(files[2]))
+    msg = str(exc.value)
+    assert str(bad) in msg and "cannot represent" in msg
+    assert {"cage": "cage.moment_Nm[2]", "spin": "rollers_spin_sum", "orbit": "rollers_about_bearing_axis"}[key] in msg
+
+
+def test_one_speed_is_not_a_sweep_and_models_do_not_mix(b32208, tmp_path):
+    g = b32208[0]
+    files = _copy_sweep(tmp_path)
+    anchor = json.loads(files[2].read_text())
+    with pytest.raises(KegelInputError, match="two or more speeds.*kegel cfd run"):
+        flow_forces_from_cfd(anchor, g, source=str(files[2]))
+    # another contact gap at the other speeds: another CFD model, not part of this sweep
+    for f in files:
+        d = json.loads(f.read_text())
+        d["point"]["gap_ratio"] = 0.02
+        f.write_text(json.dumps(d))
+    anchor["point"]["gap_ratio"] = 0.04
+    runs = read_cfd_results(tmp_path) + [(files[2], anchor)]
+    assert len(cfd_sweep(runs, anchor["point"])) == 1
+    with pytest.raises(KegelInputError, match="two or more speeds"):
+        flow_forces_from_cfd(anchor, g, sweep=runs, source="gap 0.04")
+    # per speed the finest mesh
+    fine = copy.deepcopy(json.loads(files[0].read_text()))
+    fine["fidelity"]["cells"] *= 3
+    runs = read_cfd_results(tmp_path) + [(Path("fine.json"), fine)]
+    members = cfd_sweep(runs, fine["point"])
+    assert len(members) == 4 and members[0][0] == Path("fine.json")
+
+
+def test_the_orbit_part_is_the_rollers_moment_less_their_spin_moments(b32208, runs):
+    """body_drags by hand for the flooded 2000 rpm point: orbit moment per roller =
+    (M_rollers,z - cos(beta) M_spin) / Z."""
+    g = b32208[0]
+    f, d = next((f, d) for f, d in runs if "2000rpm_flooded" in str(f))
+    t = d["torques_Nm"]
+    got = body_drags(d, g)
+    a_z = math.cos(g.roller_axis_angle_rad)
+    assert got["orbit_moment_Nm"] == pytest.approx(
+        (t["rollers_about_bearing_axis"]["total"] - a_z * t["rollers_spin_sum"]["total"]) / 17, rel=1e-12)
+    assert got["orbit_force_N"] == pytest.approx(got["orbit_moment_Nm"] / orbit_radius_m(g), rel=1e-12)
+    assert got["orbit_moment_Nm"] < 0 < got["spin_torque_Nm"] and got["cage_moment_Nm"] < 0
