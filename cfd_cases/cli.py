@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from .geometry import CELLS_ACROSS_GAP, CLEARANCE_RATIO, GAP_RATIO
+
 __all__ = ["add_cfd_parser"]
 
 
@@ -96,6 +98,22 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         extra["housing_clearance_m"] = s_m
     if getattr(args, "frame", "cage") != "cage":
         extra["frame"] = args.frame
+    for key, option, lo, hi in (("gap_ratio", "--gap-ratio", 1e-4, 0.2), ("clearance_ratio", "--clearance-ratio", 1e-3, 0.2)):
+        value = getattr(args, key, None)
+        if value is not None:
+            if not (math.isfinite(value) and lo <= value <= hi):
+                raise KegelInputError(src, option, value, f"a fraction of the roller diameter in [{lo}, {hi}], e.g. 0.02")
+            extra[key] = float(value)
+    cells = getattr(args, "cells_across_gap", None)
+    if cells is not None:
+        if not 1 <= cells <= 20:
+            raise KegelInputError(src, "--cells-across-gap", cells, "a whole number from 1 to 20")
+        extra["cells_across_gap"] = cells
+    if getattr(args, "sector", False):
+        if level is not None:
+            raise KegelInputError(src, "--sector", "given", "a flooded point (an oil bath does not repeat from pocket "
+                                  "to pocket)")
+        extra["sector"] = True
     if getattr(args, "no_cage", False):
         extra["cage"] = False
     if bearing_file:
@@ -112,6 +130,11 @@ def _case_name(point, level_text: str) -> str:
         extra += "_nocage"
     if point.housing_clearance_m is not None:
         extra += f"_s{point.housing_clearance_m * 1e3:g}mm"
+    if (point.gap_ratio, point.clearance_ratio, point.cells_across_gap) != (GAP_RATIO, CLEARANCE_RATIO, CELLS_ACROSS_GAP):
+        extra += f"_g{point.gap_ratio:g}_c{point.clearance_ratio:g}" + (
+            "" if point.cells_across_gap is None else f"_n{point.cells_across_gap}")
+    if point.sector:
+        extra += "_sector"
     return (f"{point.bearing}_{point.speed_rad_s * 30 / math.pi:.0f}rpm_{lvl}_"
             f"{point.temperature_K - 273.15:.0f}C_{point.mesh}{extra}")
 
@@ -390,6 +413,14 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--housing-clearance",
                         help='axial distance from the bearing faces to the housing walls, e.g. "6 mm" '
                              "(default 0.25 T of the bearing)")
+        sp.add_argument("--gap-ratio", type=float,
+                        help="contact gap g / D_w: the raceways set back by g from the real rollers (default 0.08)")
+        sp.add_argument("--clearance-ratio", type=float,
+                        help="roller end / rib and cage pocket clearance / D_w (default 0.08)")
+        sp.add_argument("--cells-across-gap", type=int,
+                        help="cells across the narrowest point of each raceway contact gap (default: the mesh level's wall size)")
+        sp.add_argument("--sector", action="store_true",
+                        help="flooded: one roller pitch with periodic sides (the flow repeats in the cage frame)")
         sp.add_argument("--output", help="case folder (sweep: parent folder)")
         sp.add_argument("--quiet", action="store_true", help="no progress lines")
         common(sp)

@@ -61,7 +61,7 @@ def write_msh22(path: str | Path) -> Path:
     return path
 
 
-def gmsh_to_foam(case: str | Path, msh: str | Path, patch_types: Mapping[str, str]) -> None:
+def gmsh_to_foam(case: str | Path, msh: str | Path, patch_types: Mapping[str, str | Mapping[str, str]]) -> None:
     """Convert ``msh`` into ``case/constant/polyMesh`` and set the patch types.
 
     Raises
@@ -77,8 +77,10 @@ def gmsh_to_foam(case: str | Path, msh: str | Path, patch_types: Mapping[str, st
 _RE_PATCH = re.compile(r"^\s{4}(\w+)\s*\n\s{4}\{(.*?)\n\s{4}\}", re.S | re.M)
 
 
-def set_patch_types(case: str | Path, patch_types: Mapping[str, str]) -> None:
-    """Set ``type`` (and ``inGroups``) of every patch in ``constant/polyMesh/boundary``."""
+def set_patch_types(case: str | Path, patch_types: Mapping[str, str | Mapping[str, str]]) -> None:
+    """Set ``type`` (and ``inGroups``) of every patch in ``constant/polyMesh/boundary``; a patch
+    whose type is given as a mapping gets its other entries too (e.g. a ``cyclicAMI`` pair's
+    ``neighbourPatch`` and ``transform``)."""
     path = Path(case) / "constant" / "polyMesh" / "boundary"
     text = path.read_text()
     found = set()
@@ -88,13 +90,16 @@ def set_patch_types(case: str | Path, patch_types: Mapping[str, str]) -> None:
         if name not in patch_types:
             raise MeshError(f"{path}: mesh patch '{name}' has no type (known: {sorted(patch_types)})")
         found.add(name)
-        kind = patch_types[name]
+        spec = patch_types[name]
+        entries = dict(spec) if isinstance(spec, Mapping) else {"type": spec}
+        kind = entries.pop("type")
         body = re.sub(r"\n\s*type\s+\w+;", f"\n        type            {kind};", body)
         body = re.sub(r"\n\s*physicalType\s+\w+;", "", body)
         body = re.sub(r"\n\s*inGroups\s+[^;]*;", "", body)
+        extra = "".join(f"\n        {k:<15} {v};" for k, v in entries.items())
         if kind != "patch":
-            body = body.replace(f"type            {kind};",
-                                f"type            {kind};\n        inGroups        1({kind});", 1)
+            extra = f"\n        inGroups        1({kind});" + extra
+        body = body.replace(f"type            {kind};", f"type            {kind};" + extra, 1)
         return f"    {name}\n    {{{body}\n    }}"
 
     new = _RE_PATCH.sub(repl, text)

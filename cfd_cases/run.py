@@ -48,7 +48,8 @@ import numpy as np
 from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
                    run_utility, set_controldict_value, time_dirs, write_field_values)
 from .forces import ForceSeries, read_forces
-from .geometry import MESH_LEVELS, CfdGeometry, build_mesh, cfd_geometry, roller_name
+from .geometry import (CELLS_ACROSS_GAP, CLEARANCE_RATIO, GAP_RATIO, MESH_LEVELS, CfdGeometry, build_mesh,
+                       cfd_geometry, roller_name)
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
 from .steady import SteadyTest, steady_drift
 from .template import render_case
@@ -104,6 +105,15 @@ class CfdPoint:
     # The bearing's data file when it was given as a file (``kegel cfd run --bearing FILE``);
     # None: the shipped data of the designation ``bearing``
     bearing_file: str | None = None
+    # Contact gap g / D_w: the raceways are set back by g from the real rollers (the contact
+    # model owns the film below g; see kegel.cfd_cases.geometry and benchmarks/cfd_gap_study.py)
+    gap_ratio: float = GAP_RATIO
+    # Roller end / rib and pocket clearance c / D_w (at least the real pocket clearance)
+    clearance_ratio: float = CLEARANCE_RATIO
+    # Cells across the narrowest point of each raceway contact gap (None: the level's wall size)
+    cells_across_gap: int | None = CELLS_ACROSS_GAP
+    # Flooded only: one roller pitch with periodic sides (the flow repeats in the cage frame)
+    sector: bool = False
 
     @property
     def flooded(self) -> bool:
@@ -112,6 +122,21 @@ class CfdPoint:
     def validate(self) -> None:
         if not isinstance(self.cage, bool):
             raise ValueError(f"cage = {self.cage!r}: expected true or false")
+        if not isinstance(self.sector, bool):
+            raise ValueError(f"sector = {self.sector!r}: expected true or false")
+        if self.sector and not self.flooded:
+            raise ValueError("sector = true: only for a flooded bearing (an oil bath's free surface and gravity "
+                             "do not repeat from pocket to pocket)")
+        if self.sector and self.frame != "cage":
+            raise ValueError("sector = true: only in the cage frame (frame = 'cage'), where the flow repeats")
+        for name, lo, hi in (("gap_ratio", 1e-4, 0.2), ("clearance_ratio", 1e-3, 0.2)):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and lo <= v <= hi):
+                raise ValueError(f"{name} = {v!r}: expected a fraction of the roller diameter in [{lo}, {hi}]")
+        if self.cells_across_gap is not None and (isinstance(self.cells_across_gap, bool)
+                                                  or not isinstance(self.cells_across_gap, int)
+                                                  or not 1 <= self.cells_across_gap <= 20):
+            raise ValueError(f"cells_across_gap = {self.cells_across_gap!r}: expected a whole number from 1 to 20")
         if self.frame not in FRAMES:
             raise ValueError(f"frame = {self.frame!r}: expected one of {', '.join(FRAMES)}")
         if self.housing_clearance_m is not None and not (math.isfinite(self.housing_clearance_m)
@@ -163,7 +188,7 @@ def roller_wall_rotation(cg: CfdGeometry, k: int, omega_c: float, omega_s: float
 def _bodies(cg: CfdGeometry, cage: bool = True) -> list[dict[str, Any]]:
     bodies = [{"name": n, "patches": [n], "origin": np.zeros(3)}
               for n in ("inner_ring", "outer_ring", "cage", "shaft", "housing") if cage or n != "cage"]
-    for k in range(cg.roller_count):
+    for k in cg.modelled_rollers:
         c, _ = cg.roller_centre_and_axis(k)
         bodies.append({"name": roller_name(k), "patches": [roller_name(k)], "origin": c})
     return bodies
@@ -281,15 +306,18 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         meta_path.write_text(json.dumps(meta, indent=2))
         return case_dir
     bearing, g, lub = _load(point)
-    cg = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m)
+    cg = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m, gap_ratio=point.gap_ratio,
+                      clearance_ratio=point.clearance_ratio, sector=point.sector)
     kin = kinematics(g, point.speed_rad_s)
     rollers = [roller_wall_rotation(cg, k, kin["cage_rad_s"], kin["roller_spin_rad_s"])
-               for k in range(cg.roller_count)]
+               for k in cg.modelled_rollers]
     patch_names = ["inner_ring", "shaft", "outer_ring", "housing", *(["cage"] if point.cage else []),
                    *[r["name"] for r in rollers]]
-    # pressure reference: in the side chamber at the top (air in an oil bath)
+    # pressure reference: in the side chamber at the top (air in an oil bath); in a sector, in
+    # the side chamber on roller 0's azimuth
     r_mid = 0.5 * (cg.shaft_radius_m + cg.housing_radius_m)
-    p_ref = np.array([0.0, r_mid, 0.5 * cg.z_min_m])
+    phi_ref = cg.roller_azimuth_rad(0) if cg.sector else 0.5 * math.pi
+    p_ref = np.array([r_mid * math.cos(phi_ref), r_mid * math.sin(phi_ref), 0.5 * cg.z_min_m])
     omega_i = point.speed_rad_s
     if point.flooded:
         template = "bearing_flooded"
@@ -311,6 +339,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         "inner_omega_rad_s": omega_i, "cage_omega_rad_s": kin["cage_rad_s"],
         "density_kg_m3": lub.density_kg_m3, "kinematic_viscosity_m2_s": lub.kinematic_viscosity_m2_s,
         "p_ref_point": p_ref, "n_procs": point.n_procs,
+        "periodic_patches": ["periodic_lo", "periodic_hi"] if cg.sector else [],
         "mrf_active": "yes" if point.frame == "cage" else "no",
     })
     tmp = case_dir.with_name(case_dir.name + ".preparing")
@@ -318,7 +347,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     t0 = time.monotonic()
     log(f"cfd: meshing {bearing.designation} at level '{point.mesh}' (gmsh)"
         + ("" if point.cage else ", without the cage"))
-    types = build_mesh(cg, point.mesh, tmp / "bearing.msh", cage=point.cage)
+    types = build_mesh(cg, point.mesh, tmp / "bearing.msh", cage=point.cage,
+                       cells_across_gap=point.cells_across_gap)
     gmsh_to_foam(tmp, tmp / "bearing.msh", types)
     (tmp / "bearing.msh").unlink()
     quality = check_mesh(tmp)
@@ -336,8 +366,11 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     meta = {"point": _point_json(point), "template": template, "kinematics": kin, "initial_state": initial,
             "mesh": asdict(quality), "mesh_time_s": mesh_s,
             "lubricant": lub.as_dict(),
-            "geometry": {"gap_m": cg.gap_m, "housing_clearance_m": cg.housing_clearance_m,
-                         "z_min_m": cg.z_min_m, "z_max_m": cg.z_max_m},
+            "geometry": {"gap_m": cg.gap_m, "clearance_m": cg.clearance_m,
+                         "housing_clearance_m": cg.housing_clearance_m,
+                         "z_min_m": cg.z_min_m, "z_max_m": cg.z_max_m,
+                         "roller_surface": "real (nominal diameter and length); raceways set back by the gap",
+                         "sector": cg.sector, "copies": cg.copies, "roller_count": cg.roller_count},
             "rollers": [{"name": r["name"], "centre_m": r["centre"].tolist(), "axis": r["roller_axis"].tolist(),
                          "wall_rotation_origin_m": r["origin"].tolist(), "wall_rotation_axis": r["axis"].tolist(),
                          "wall_rotation_rad_s": r["omega"]} for r in rollers]}
@@ -441,7 +474,7 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
     for f in ("C", "Cx", "Cy", "Cz"):
         (case / "0" / f).unlink(missing_ok=True)
     np.save(case / "cell_centres.npy", cells)
-    faces = read_boundary_geometry(case)
+    faces = {k: v for k, v in read_boundary_geometry(case).items() if not k.startswith("periodic")}
     ez = np.array([0.0, 0.0, 1.0])
     omega_c, omega_i = kin["cage_rad_s"], kin["inner_ring_rad_s"]
     motions: dict[str, tuple[np.ndarray, np.ndarray]] = {
@@ -880,40 +913,53 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
             sel = times == times[-1]
         return series[sel].mean(axis=0)
 
+    # a sector holds 1/copies of the oil space: the whole bearing's torques about the axis are
+    # copies times the sector's, its resultant forces on the rings and cage vanish by symmetry,
+    # and its rollers are the modelled one turned round by the roller pitch
+    copies = int(meta.get("geometry", {}).get("copies", 1))
+    ez = np.array([0.0, 0.0, 1.0])
+
+    def whole(v: np.ndarray) -> np.ndarray:
+        return v if copies == 1 else copies * float(v[2]) * ez
+
     torques = {}
     power = 0.0
     for name in ("inner_ring", "outer_ring", "cage", "shaft", "housing"):
         f = _forces(case, name)
-        mz = {"total": float(mean(f.moment_total[:, 2], f.time)),
-              "pressure": float(mean(f.moment_pressure[:, 2], f.time)),
-              "viscous": float(mean(f.moment_viscous[:, 2], f.time))}
+        mz = {"total": copies * float(mean(f.moment_total[:, 2], f.time)),
+              "pressure": copies * float(mean(f.moment_pressure[:, 2], f.time)),
+              "viscous": copies * float(mean(f.moment_viscous[:, 2], f.time))}
         torques[name] = mz
         power -= mz["total"] * turning.get(name, 0.0)
     rollers = []
     spin_sum = {"total": 0.0, "pressure": 0.0, "viscous": 0.0}
     for r in meta["rollers"]:
         f = read_forces(case, f"forces_{r['name']}")
-        F = mean(f.force_total, f.time)
-        M = mean(f.moment_total, f.time)
-        a = np.array(r["axis"])
-        c = np.array(r["centre_m"])
-        v_c, w_abs = _roller_motion(r, kin)
-        p_k = float(F @ v_c + M @ w_abs)
-        power -= p_k
-        spin = {"total": float(M @ a), "pressure": float(mean(f.moment_pressure, f.time) @ a),
-                "viscous": float(mean(f.moment_viscous, f.time) @ a)}
-        for k in spin_sum:
-            spin_sum[k] += spin[k]
-        # the orbiting drag of the roller: its force's moment about the bearing axis (plus its own z moment)
-        orbit_mz = float(np.cross(c, F)[2] + M[2])
-        rollers.append({"name": r["name"], "force_N": F.tolist(), "moment_about_centre_Nm": M.tolist(),
-                        "spin_torque_Nm": spin, "moment_about_bearing_axis_Nm": orbit_mz,
-                        "power_W": -p_k})
+        F0 = mean(f.force_total, f.time)
+        M0 = mean(f.moment_total, f.time)
+        Mp0, Mv0 = mean(f.moment_pressure, f.time), mean(f.moment_viscous, f.time)
+        for j in range(copies):
+            rot = _rotation_z(2.0 * math.pi * j / copies)
+            F, M = rot @ F0, rot @ M0
+            a = rot @ np.array(r["axis"])
+            c = rot @ np.array(r["centre_m"])
+            name = r["name"] if copies == 1 else roller_name(j)
+            v_c, w_abs = _roller_motion({"centre_m": c, "axis": a}, kin)
+            p_k = float(F @ v_c + M @ w_abs)
+            power -= p_k
+            spin = {"total": float(M @ a), "pressure": float((rot @ Mp0) @ a), "viscous": float((rot @ Mv0) @ a)}
+            for k in spin_sum:
+                spin_sum[k] += spin[k]
+            # the orbiting drag of the roller: its force's moment about the bearing axis (plus its own z moment)
+            orbit_mz = float(np.cross(c, F)[2] + M[2])
+            rollers.append({"name": name, "force_N": F.tolist(), "moment_about_centre_Nm": M.tolist(),
+                            "spin_torque_Nm": spin, "moment_about_bearing_axis_Nm": orbit_mz,
+                            "power_W": -p_k, **({} if copies == 1 else {"from": r["name"]})})
     torques["rollers_about_bearing_axis"] = {"total": float(sum(r["moment_about_bearing_axis_Nm"] for r in rollers))}
     torques["rollers_spin_sum"] = spin_sum
     f_cage = _forces(case, "cage")
-    cage = {"force_N": mean(f_cage.force_total, f_cage.time).tolist(),
-            "moment_Nm": mean(f_cage.moment_total, f_cage.time).tolist()}
+    cage = {"force_N": whole(mean(f_cage.force_total, f_cage.time)).tolist(),
+            "moment_Nm": whole(mean(f_cage.moment_total, f_cage.time)).tolist()}
     volume = {}
     vol_file = case / "postProcessing" / "liquidVolume"
     if vol_file.is_dir():
@@ -922,6 +968,12 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
     return CfdResult(case=case, point=meta["point"], torques_Nm=torques, rollers=rollers, cage=cage,
                      power_loss_W=power, loss_torque_at_shaft_Nm=power / abs(kin["inner_ring_rad_s"]),
                      window_s=window, steady=steady, liquid_volume=volume, cells=cells)
+
+
+def _rotation_z(angle: float) -> np.ndarray:
+    """The rotation matrix about the bearing axis (z) by ``angle``."""
+    c, s_ = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def _read_liquid_volume(root: Path) -> dict[str, list[float]]:

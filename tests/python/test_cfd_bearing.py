@@ -24,19 +24,75 @@ def g32208():
     return derive_geometry(load_bearing("32208"), load_material("bearing_steel"))
 
 
+def _dist_to_line(p, line) -> float:
+    (z0, r0), (z1, r1) = line
+    u = np.array([z1 - z0, r1 - r0]) / math.hypot(z1 - z0, r1 - r0)
+    v = np.asarray(p) - np.array([z0, r0])
+    return abs(u[0] * v[1] - u[1] * v[0])
+
+
 def test_cfd_geometry_is_derived_from_the_bearing_data(g32208):
     cg = cfd_geometry(g32208)
     assert cg.roller_count == 17
     assert cg.housing_radius_m == pytest.approx(0.040)
     assert cg.shaft_radius_m == pytest.approx(0.020)
     assert cg.gap_m == pytest.approx(0.08 * g32208.roller_mean_diameter_m)
-    # shrunk rollers keep the gap to both raceways: distance from the roller axis to the outer
-    # raceway line at mid-length is D_w/2 (line contact); the CFD roller radius there is D_w/2 - g
+    # the real rollers: mean diameter D_w, length L
     mid = 0.5 * (cg.roller_radii_m[0] + cg.roller_radii_m[1])
-    assert mid == pytest.approx(0.5 * g32208.roller_mean_diameter_m - cg.gap_m, rel=1e-9)
+    assert mid == pytest.approx(0.5 * g32208.roller_mean_diameter_m, rel=1e-9)
+    assert cg.roller_length_m == pytest.approx(g32208.roller_length_m)
     c0, a0 = cg.roller_centre_and_axis(0)
     assert c0[1] < 0 and abs(c0[0]) < 1e-12  # roller 0 at the bottom
     assert np.linalg.norm(a0) == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("gap_ratio", [0.08, 0.02, 0.005])
+def test_raceways_stand_the_contact_gap_off_the_real_rollers(g32208, gap_ratio):
+    """Along each contact line (the roller generatrix facing a raceway, in the axial plane) the
+    distance to the set-back raceway is g, at both ends of the roller; the rib face is the
+    clearance c from the roller's large end, and the pockets c from the roller."""
+    cg = cfd_geometry(g32208, gap_ratio=gap_ratio)
+    g = gap_ratio * g32208.roller_mean_diameter_m
+    a = np.array(cg.roller_axis)
+    n = np.array([-a[1], a[0]])  # away from the bearing axis
+    s0 = np.array(cg.roller_small_end_m)
+    for xi, r in ((0.0, cg.roller_radii_m[0]), (cg.roller_length_m, cg.roller_radii_m[1])):
+        foot = s0 + xi * a
+        assert _dist_to_line(foot - r * n, cg.inner_raceway_line_m) == pytest.approx(g, rel=1e-6)
+        assert _dist_to_line(foot + r * n, cg.outer_raceway_line_m) == pytest.approx(g, rel=1e-6)
+    # the cup's bore line is the outer raceway line
+    cup = cg.cup_section
+    assert _dist_to_line(cup[0], cg.outer_raceway_line_m) == pytest.approx(0.0, abs=1e-12)
+    # rib face (cone section points 3 -> 4) against the roller's large end face (its centre and rim)
+    rib = (cg.cone_section[3], cg.cone_section[4])
+    large = s0 + cg.roller_length_m * a
+    for point in (large - 0.5 * cg.roller_radii_m[1] * n, large - 0.9 * cg.roller_radii_m[1] * n):
+        d = _dist_to_line(point, rib)
+        assert cg.clearance_m * 0.95 < d < cg.clearance_m * 1.1
+    tan_g = (cg.roller_radii_m[1] - cg.roller_radii_m[0]) / cg.roller_length_m
+    c = cg.clearance_m
+    assert cg.pocket_radii_m[0] - (cg.roller_radii_m[0] - c * tan_g) == pytest.approx(c, rel=1e-9)
+    assert cg.pocket_length_m == pytest.approx(cg.roller_length_m + 2 * c)
+    assert cg.clearance_m >= g32208.cage_pocket_clearance_circumferential_m
+
+
+def test_gap_and_clearance_ratios_are_checked(g32208):
+    for kw in ({"gap_ratio": 0.0}, {"gap_ratio": 0.5}, {"gap_ratio": float("nan")}, {"clearance_ratio": 0.0}):
+        with pytest.raises(ValueError, match=next(iter(kw))):
+            cfd_geometry(g32208, **kw)
+    for kw in ({"gap_ratio": -0.1}, {"cells_across_gap": 0}, {"sector": "yes"}):
+        with pytest.raises(ValueError, match=next(iter(kw))):
+            CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, **kw).validate()
+    with pytest.raises(ValueError, match="flooded"):
+        CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=0.04, sector=True).validate()
+
+
+def test_sector_is_one_pitch_around_roller_0(g32208):
+    cg = cfd_geometry(g32208, sector=True)
+    lo, hi = cg.sector_angles_rad
+    assert hi - lo == pytest.approx(2 * math.pi / 17)
+    assert 0.5 * (lo + hi) == pytest.approx(cg.roller_azimuth_rad(0))
+    assert cg.modelled_rollers == [0] and cg.copies == 17
 
 
 def test_housing_clearance_must_be_positive(g32208):

@@ -1,0 +1,127 @@
+"""The contact / CFD split, proved by a gap study: the flooded 32208 at 2000 rpm, 50 degC.
+
+The CFD opens each raceway line contact to a gap ``g`` (the raceways set back by ``g`` from the
+real rollers, kegel.cfd_cases.geometry); the contact model owns the film below ``g`` (its rolling
+force cut off where the film reaches ``g``). The split is right when contact + CFD stops depending
+on ``g``. This script runs (or, when a case folder exists, resumes and re-reads) the flooded case
+at each ``g / D_w`` as a one-pitch sector (periodic sides; the flooded flow repeats from pocket to
+pocket in the cage frame) with ``--cells`` cells across the narrowest point of each gap, and
+writes the CFD loss, its cost and, where kegel's contact model offers the cut-off, the contact
+loss at the same ``g`` and the sum against ``1 / sqrt(g)``.
+
+    .venv/bin/python benchmarks/cfd_gap_study.py [--gaps 0.08 0.04 0.02 0.01] [--cells 3] [--mesh tiny]
+    .venv/bin/python benchmarks/cfd_gap_study.py --check-sector   # sector against the whole bearing
+
+Case folders: results/cfd/gap_study/<case> (not kept in git; a run interrupted by the end of a
+session resumes from its latest iteration). Output: benchmarks/results/cfd_gap_study.json and
+each case's results.json under benchmarks/results/cfd_gap_study/<case>/ (rewritten after every
+case, so a partial study is kept).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import shutil
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent
+CASES = REPO / "results" / "cfd" / "gap_study"
+OUT = HERE / "results" / "cfd_gap_study.json"
+STORE = HERE / "results" / "cfd_gap_study"
+
+SPEED_RPM = 2000.0
+TEMPERATURE_K = 323.15
+AXIAL_LOAD_N = 1000.0   # the seed's Figure 9 point (32208, Fa = 1 kN)
+
+
+def case_name(gap: float, cells: int, mesh: str, sector: bool) -> str:
+    return f"32208_2000rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}" + ("_sector" if sector else "_full")
+
+
+def contact_loss_Nm(gap_m: float) -> dict:
+    """kegel's contact friction torque of the study point with the rolling force cut off at a
+    film height of ``gap_m`` (kegel.supply.contact_loss_at_film_limit)."""
+    from kegel.supply import contact_loss_at_film_limit  # the contact side of the split
+
+    r = contact_loss_at_film_limit(gap_m, bearing="32208", speed=f"{SPEED_RPM:g} rpm",
+                                   axial_load=f"{AXIAL_LOAD_N:g} N", temperature=f"{TEMPERATURE_K - 273.15:g} degC",
+                                   oil_level="flooded")
+    return {k: r[k] for k in ("friction_torque_Nm", "ehl_rolling_torque_Nm", "converged") if k in r}
+
+
+def run_one(gap: float, cells: int, mesh: str, sector: bool, n_procs: int) -> dict:
+    from kegel.cfd_cases.run import CfdPoint, run_case
+
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED_RPM * math.pi / 30, temperature_K=TEMPERATURE_K,
+                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=1500, gap_ratio=gap,
+                 cells_across_gap=cells, sector=sector)
+    case = CASES / case_name(gap, cells, mesh, sector)
+    t0 = time.monotonic()
+    run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
+    data = json.loads((case / "results.json").read_text())
+    meta = json.loads((case / "kegel-case.json").read_text())
+    dest = STORE / case.name
+    dest.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(case / "results.json", dest / "results.json")
+    t = data["torques_Nm"]
+    return {"case": case.name, "gap_ratio": gap, "gap_m": meta["geometry"]["gap_m"], "cells_across_gap": cells,
+            "mesh": mesh, "sector": sector, "cells": data["fidelity"]["cells"], "mesh_time_s": meta["mesh_time_s"],
+            "runtime_s": data["runtime_s"], "iterations": data["iterations"], "steady": data["steady"],
+            "session_wall_s": time.monotonic() - t0,
+            "cfd_loss_Nm": data["loss_torque_at_shaft_Nm"],
+            "inner_ring_Nm": t["inner_ring"]["total"], "outer_ring_Nm": t["outer_ring"]["total"],
+            "cage_Nm": t["cage"]["total"], "rollers_spin_sum_Nm": t["rollers_spin_sum"]["total"],
+            "angular_momentum_balance": data["angular_momentum_balance"]["relative_to_drive_torque"]}
+
+
+def write(rows: list[dict], command: str, note: str) -> None:
+    import kegel
+    from kegel.io import atomic_write_json, provenance
+
+    for r in rows:
+        c = contact_loss_Nm(r["gap_m"])
+        r["contact"] = c
+        if c is not None:
+            r["sum_Nm"] = r["cfd_loss_Nm"] + c["friction_torque_Nm"]
+        r["inv_sqrt_gap"] = 1.0 / math.sqrt(r["gap_ratio"])
+    OUT.parent.mkdir(exist_ok=True)
+    atomic_write_json(OUT, {"command": command, "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, Fa = 1 kN",
+                            "note": note, "rows": rows, "kegel_version": kegel.__version__,
+                            "provenance": provenance()})
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--gaps", type=float, nargs="+", default=[0.08, 0.04, 0.02, 0.01])
+    ap.add_argument("--cells", type=int, default=3)
+    ap.add_argument("--mesh", default="tiny")
+    ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--check-sector", action="store_true",
+                    help="run g = 0.08 with one cell across as a sector and as the whole bearing")
+    args = ap.parse_args(argv)
+    command = "benchmarks/cfd_gap_study.py " + " ".join(sys.argv[1:] if argv is None else argv)
+    rows: list[dict] = []
+    previous = json.loads(OUT.read_text()).get("rows", []) if OUT.is_file() else []
+    if args.check_sector:
+        plan = [(0.08, 1, args.mesh, True), (0.08, 1, args.mesh, False)]
+    else:
+        plan = [(g, args.cells, args.mesh, True) for g in args.gaps]
+    for gap, cells, mesh, sector in plan:
+        rows.append(run_one(gap, cells, mesh, sector, args.np))
+        keep = [r for r in previous if r["case"] not in {x["case"] for x in rows}]
+        write(sorted(keep + rows, key=lambda r: (not r["sector"], r["cells_across_gap"], -r["gap_ratio"])), command,
+              "rows of earlier invocations are kept; each row names its case")
+        r = rows[-1]
+        print(f"g/Dw {r['gap_ratio']:<6g} n {r['cells_across_gap']} {'sector' if r['sector'] else 'full  '} "
+              f"cells {r['cells']:>8} run {r['runtime_s']:>7.0f} s  CFD loss {1e3 * r['cfd_loss_Nm']:.2f} mN m  "
+              f"balance {100 * r['angular_momentum_balance']:+.1f} %", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
