@@ -189,8 +189,8 @@ class MeasuredSeries:
 def _citation(cit: dict[str, Any]) -> str:
     text = (f"{', '.join(cit.get('authors', []))}: {cit.get('title', '?')}, {cit.get('journal', '')} "
             f"{cit.get('volume', '')} ({cit.get('year', '')})")
-    if cit.get("pages"):
-        text += f" {cit['pages']}"
+    if cit.get("pages") or cit.get("article"):
+        text += f" {cit.get('pages') or cit.get('article')}"
     if cit.get("figure"):
         text += f", {cit['figure']}"
     return text.strip()
@@ -433,8 +433,9 @@ def measured_datasets() -> list[Comparison]:
             figs = ", ".join(s.get("figure", "?") for s in raw.get("measured_series", []))
             c.note = (f"no measured torque is printed in the paper's text or tables; the measurements are in "
                       f"figures ({figs}) that could not be read here: not validated (see {DATASET_DIR.name}/README.md)")
-        else:  # solving recorded points needs the bearing's internal geometry, not yet in the files
-            c.note = f"{n_points} measured points recorded but not yet runnable ({path.name}): not validated"
+        else:  # recorded points kegel cannot run (conditions missing from the paper, or its geometry)
+            why = raw.get("not_runnable_because", "the bearing's internal geometry is not in the file")
+            c.note = f"{n_points} measured points recorded but not runnable: {why} ({path.name}): not validated"
         out.append(c)
     return out
 

@@ -10,6 +10,8 @@ that a change of kegel's level is seen. Nothing here is a fitting target.
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from conftest import EXAMPLES
@@ -27,6 +29,28 @@ def test_measured_datasets_are_cited_and_say_what_could_not_be_read():
         # the comparison has no points and says so instead of passing silently
         assert not c.reference_Nm and c.meets_acceptance is None
         assert "not validated" in c.note
+
+
+def test_zhang_li_2025_records_its_two_printed_torques_and_what_is_missing():
+    """Machines 13 (2025) 910, Sec. 4: a 32208 pair (X), 1800 rpm, Fa 2.16 kN, oil injection; mean
+    torque per bearing 0.56 N m (SR 0.85 rho_p) and 0.61 N m (SR 0.95 rho_p). Not runnable: the oil
+    and its temperature are not given."""
+    import tomllib
+
+    from kegel.units import parse_quantity
+    from kegel.validation import DATASET_DIR
+
+    path = DATASET_DIR / "zhang_li2025.toml"
+    raw = tomllib.loads(path.read_text())
+    torques = [parse_quantity(p["torque"], "moment", source=path, key="torque") for p in raw["measured_points"]]
+    assert torques == [0.56, 0.61] and raw["measured_points_in_text"] == 2
+    for p in raw["measured_points"]:
+        assert parse_quantity(p["speed"], "speed", source=path, key="speed") == pytest.approx(1800 * 2 * math.pi / 60)
+        assert parse_quantity(p["axial_load"], "force", source=path, key="axial_load") == pytest.approx(2160.0)
+    missing = " ".join(raw["test"]["missing"])
+    assert "oil name" in missing and "temperature" in missing
+    (c,) = [c for c in measured_datasets() if c.name == "zhang_li2025"]
+    assert "not runnable" in c.note and "temperature" in c.note and "Machines 13 (2025) 910" in c.citation
 
 
 # Fully flooded raceway contacts: the default before the lubricant-supply model of issue 27,
