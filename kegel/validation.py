@@ -60,9 +60,10 @@ MEASURED_WORST = 0.20
 #: The seed paper's test conditions (Tables 1-3) as scenes, for the engineering models.
 SKF_SCENES = ("32216_table1.toml", "32216_table2.toml", "32216_table3.toml")
 #: What is known of the SKF model's scatter, with its sources.
-SKF_SCATTER = ("no accuracy is stated with the model in the catalogue chapter kegel uses (SKF Rolling bearings, "
-               "PUB BU/P1 10000 EN, Friction); measured independently, Manjunath et al. (Machines 11 (2023) 801, "
-               "Sec. 4.2) found it within 5-8 % of their measured TRB torque above 400 rpm and about 15 % low below")
+SKF_SCATTER = ("no accuracy figure of the model was found in the catalogue text available to the project (SKF "
+               "Rolling bearings, PUB BU/P1 10000 EN, Friction); measured independently, Manjunath et al. (Machines "
+               "11 (2023) 801, Sec. 4.2) found it within 5-8 % of their measured TRB torque above 400 rpm and about "
+               "15 % low below")
 #: What is known of Aihara's formula's scatter, with its source.
 AIHARA_SCATTER = ("no number is stated: 'good agreement' with the measured running torque of nearly two hundred "
                   "TRBs of 17-120 mm bore (Aihara, J. Tribol. 109 (1987), Sec. 4-5, read in full); valid for a "
