@@ -77,6 +77,20 @@ def test_the_conditions_are_those_of_the_table_1_scene():
     assert all(lo * (1 - 1e-12) <= p.speed_rad_s <= hi * (1 + 1e-12) for p in s.points)
 
 
+def test_the_conditions_are_those_of_table_1_in_the_project_reference():
+    """../shared/reference/test_conditions.toml [table1_axial] (where available)."""
+    ref = SHARED_REFERENCE / "test_conditions.toml"
+    if not ref.is_file():
+        pytest.skip(f"{ref} is not available outside the project's working environment")
+    t1 = tomllib.loads(ref.read_text())["table1_axial"]
+    s = read_measured_series()
+    assert t1["bearing"] == s.bearing
+    assert t1["axial_load_kN"] * 1e3 == s.axial_load_N and t1["radial_load_kN"] * 1e3 == s.radial_load_N
+    assert {round(p.temperature_degC, 9) for p in s.points} <= set(t1["temperature_degC"])
+    lo, hi = t1["shaft_speed_rpm"]
+    assert all(lo <= round(p.speed_rpm, 9) <= hi for p in s.points)
+
+
 @pytest.mark.parametrize("old,new,key", [
     ('torque = "1300 N mm"', 'torque = "1300 N"', "points[0].torque"),
     ('speed = "500 rpm"', 'speed = "-500 rpm"', "points[0].speed"),
