@@ -528,7 +528,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     scene = load_scene(args.scene, args.set or ())
     out_dir = Path(args.output) if args.output else scene.output_directory
-    result = run_scene(scene, out_dir, progress=args.format != "json")
+    result = run_scene(scene, out_dir, progress=args.format != "json", force=args.force)
     if args.format == "json":
         _json_out({"scene": scene.name, "files": result.files, "runtime_s": result.runtime_s,
                    "points": result.points})
@@ -750,6 +750,9 @@ def _parser() -> argparse.ArgumentParser:
         sp.set_defaults(func=func)
         if name == "run":
             sp.add_argument("--output", help="result folder (default: the scene's [output] directory)")
+            sp.add_argument("--force", action="store_true",
+                            help="write into an output folder that holds files kegel did not write (they are kept; "
+                                 "one with a name kegel writes is moved to kegel-replaced-<run id>/)")
     return p
 
 
@@ -761,9 +764,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KegelInputError as exc:
         print(f"kegel: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("kegel: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as exc:
+        signum = getattr(exc, "signum", 2)  # kegel.io.Terminated: SIGTERM, SIGHUP
+        print("kegel: interrupted" if signum == 2 else f"kegel: terminated ({exc})", file=sys.stderr)
+        return 128 + signum
     except KegelSolverError as exc:
         print(f"kegel: solver failed: {exc}", file=sys.stderr)
         return 1

@@ -10,6 +10,7 @@ mechanism, the roller loads around the circumference, the cage slip).
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import dataclasses
 import json
@@ -26,7 +27,7 @@ import numpy as np
 
 from .correlations import hydraulic_torques
 from .dynamics import CONTACTS, MECHANISMS
-from .io import atomic_write_json, atomic_write_json_records, atomic_write_text, provenance
+from .io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
 from .lubricant import lubricant_state
 from .errors import KegelSolverError
 from .dynamics import SimulationDiverged
@@ -84,9 +85,21 @@ class _Progress:
 
 
 def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: bool = True,
-              on_point: Callable[[dict[str, Any]], None] | None = None, write: bool = True) -> RunResult:
+              on_point: Callable[[dict[str, Any]], None] | None = None, write: bool = True,
+              force: bool = False) -> RunResult:
     """Solve every operating point of a scene and write the results (see the module docstring);
-    ``write=False`` keeps them in memory only (no files, ``files`` empty)."""
+    ``write=False`` keeps them in memory only (no files, ``files`` empty).
+
+    The results are computed in a staging folder beside the output folder and replace the
+    previous results only when the run has finished (:class:`kegel.io.RunFolder`); an output
+    folder holding files kegel did not write is refused unless ``force``. An interrupted run
+    (Ctrl-C, SIGTERM, a full disk) resumes when run again with the same scene."""
+    with signals_interrupt() if write else contextlib.nullcontext():
+        return _run_scene(scene, output_dir, progress=progress, on_point=on_point, write=write, force=force)
+
+
+def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
+               on_point: Callable[[dict[str, Any]], None] | None, write: bool, force: bool) -> RunResult:
     t_start = time.perf_counter()
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
@@ -101,7 +114,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     cfd_runs = preflight(scene)
     study_cfd = read_study_cfd(scene)
     warn_log = WarningLog()
-    folder, done = _open_folder(scene, fid, out) if write else (None, {})
+    folder, done = _open_folder(scene, fid, out, force) if write else (None, {})
+    work = folder.staging if folder is not None else out  # written here, moved to out when finished
     try:
         bar = _Progress(len(scene.operating_points), progress)
         points: list[dict[str, Any]] = []
@@ -119,7 +133,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 # point has flooded contacts, each of its lubrications is solved with its supply
                 op_friction, supply = _point_friction(scene, friction, op)
                 if fid.solution == "dynamic":
-                    point = _dynamic_point(scene, op, op_friction, out, progress, cfd_runs)
+                    point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
                 else:
                     point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
                 point["lubricant_supply"] = supply.as_dict()
@@ -130,6 +144,8 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
                 # failed with the solver's message (and never warm-starts the next point)
                 point = _failed_record(op, exc)
                 data = _core.quasi_static.BearingData(model)
+            if folder is not None:
+                point = folder.final(point)  # paths into the staging folder: where they will be
             if scene.study is not None and point.get("solved", True):
                 point["study"] = study_rows(scene, point, study_cfd)
             warns = point_warnings(scene, point, friction)
@@ -150,17 +166,20 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
         if folder is None:
             return RunResult(points=points, files={}, runtime_s=runtime)
         try:
-            files = _write_summary(scene, friction, choice, points, runtime, out, warn_log.summary(),
+            files = _write_summary(scene, friction, choice, points, runtime, work, warn_log.summary(),
                                    folder.run_id)
         except OSError as exc:
             if exc.filename is None:
-                exc.filename = str(out)
-            print(f"kegel: the summary files could not be written ({exc.strerror or exc}); the finished points are "
-                  f"kept in {out / folder.STREAM}: rerun the same command to write them without solving again",
-                  file=sys.stderr)
+                exc.filename = str(work)
             raise
         folder.finish()
-        return RunResult(points=points, files=files, runtime_s=runtime)
+        return RunResult(points=points, files=folder.final(files), runtime_s=runtime)
+    except BaseException as exc:
+        if folder is not None:  # say what is kept: the previous results, the finished points
+            why = (f"interrupted ({exc})" if isinstance(exc, Terminated) else "interrupted"
+                   if isinstance(exc, KeyboardInterrupt) else f"stopped ({type(exc).__name__})")
+            print(f"kegel: {why}: {folder.kept()}", file=sys.stderr)
+        raise
     finally:
         if folder is not None:
             folder.close()
@@ -193,12 +212,76 @@ def _failed_record(op, exc: Exception) -> dict[str, Any]:
             "torque_by_contact_Nm": {}, "torque_by_mechanism_Nm": {}}
 
 
-def _open_folder(scene: Scene, fid: Fidelity, out: Path):
-    """Take the output folder (lock, stream of finished points); an interrupted run of the same
-    scene, fidelity and kegel version resumes from the points it finished."""
+_MISSING = object()
+#: figures every solved point's record carries (finite numbers): the table, the CSV and the plots read them
+_RECORD_NUMBERS = ("friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm", "cage_slip", "cage_speed_rpm",
+                   "power_input_W", "power_balance_error", "axial_force_N")
+#: per-roller lists of a solved point (the roller-load plot)
+_RECORD_ROLLERS = ("roller_azimuth_rad", "roller_outer_N", "roller_inner_N", "roller_rib_N")
+
+
+def _check_record(scene: Scene, p: dict[str, Any], staging: Path | None = None) -> tuple[str, Any, str] | None:
+    """Why a point record read back from ``points.jsonl`` on resume cannot be used, as (key, value,
+    expected), or None when it is whole: its operating point must be the scene's at its index (the
+    same numbers), and a solved point must carry every figure the table, the CSV and the plots
+    read (finite numbers, the breakdowns by contact and mechanism, the roller lists, warnings; a
+    dynamic point its files). A failed point carries ``converged`` false and its ``failure``."""
+    def finite(v: Any) -> bool:
+        return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+    ops = scene.operating_points
+    idx = p.get("index")
+    if not isinstance(idx, int) or isinstance(idx, bool) or not 0 <= idx < len(ops):
+        return "index", idx, f"an operating point index from 0 to {len(ops) - 1}"
+    for k, v in json.loads(json.dumps(ops[idx].as_dict())).items():
+        if p.get(k, _MISSING) != v:
+            got = p.get(k, None)
+            return k, got, f"{v!r}, the value of the scene's operating point {idx}"
+    if not isinstance(p.get("converged"), bool):
+        return "converged", p.get("converged"), "true or false"
+    warns = p.get("warnings", [])
+    if not isinstance(warns, list) or not all(isinstance(w, dict) and set(w) == {"code", "message"}
+                                              and all(isinstance(x, str) for x in w.values()) for w in warns):
+        return "warnings", warns, 'a list of {"code": ..., "message": ...}'
+    if p.get("solved", True) is not True:
+        if p.get("converged") is not False or not isinstance(p.get("failure"), str) or not p["failure"]:
+            return "failure", p.get("failure"), "the solver's message of a failed point (converged false)"
+        return None
+    for k in _RECORD_NUMBERS:
+        if not finite(p.get(k)):
+            return k, p.get(k, None), "a finite number (every solved point has it)"
+    for k, names in (("torque_by_contact_Nm", CONTACTS_WITH_CAGE), ("torque_by_mechanism_Nm", MECHANISMS),
+                     ("Lambda_min", CONTACTS)):
+        d = p.get(k)
+        if not isinstance(d, dict) or any(not finite(d.get(n)) for n in names):
+            return k, d, f"finite numbers for {', '.join(names)}"
+    z = len(p.get("roller_azimuth_rad") or ())
+    for k in _RECORD_ROLLERS:
+        v = p.get(k)
+        if not isinstance(v, list) or not v or len(v) != z or not all(finite(x) for x in v):
+            return k, v, "a list of finite numbers, one per roller"
+    if scene.study is not None and not isinstance(p.get("study"), list):
+        return "study", p.get("study"), "the study's rows of the point (a list)"
+    if scene.fidelity.solution == "dynamic":
+        d = p.get("dynamic")
+        if not isinstance(d, dict) or not finite(d.get("revolutions")) or not isinstance(d.get("files"), dict):
+            return "dynamic", d, "the dynamic run's summary (revolutions, files)"
+        for k in ("outer_ring_torque_Nm", "outer_ring_torque_std_Nm"):
+            if not finite(p.get(k)):
+                return k, p.get(k, None), "a finite number (every solved dynamic point has it)"
+        if staging is not None and not (staging / "dynamic" / f"point_{idx:03d}" / "dynamic.json").is_file():
+            return "dynamic.files", d["files"].get("json"), (f"the point's files in {staging / 'dynamic'} "
+                                                             f"(point_{idx:03d}/dynamic.json is missing)")
+    return None
+
+
+def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False):
+    """Take the output folder (lock, staging folder, stream of finished points); an interrupted
+    run of the same scene, fidelity and kegel version resumes from the points it finished, each
+    record checked (:func:`_check_record`)."""
     from . import __version__
     from .errors import KegelInputError
-    from .io import OutputLocked, RunFolder
+    from .io import OutputLocked, OutputRefused, RunFolder
 
     # the scene as written, less what does not change a result (the thread count)
     written = json.loads(json.dumps(scene.resolved))
@@ -206,9 +289,14 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path):
         written["dynamic"].pop("threads", None)
     key = {"scene": written, "fidelity": fid.as_dict(), "kegel_version": __version__,
            "core_version": _core.core_version()}
-    folder = RunFolder(out, key, SUMMARY_FILES, ("dynamic",))
+    folder = RunFolder(out, key, SUMMARY_FILES, ("dynamic",), force=force,
+                       validate=lambda p: _check_record(scene, p, folder.staging))
     try:
         done = folder.open()
+    except OutputRefused as exc:
+        hint = "" if exc.forceable else " (--force does not change this)"
+        raise KegelInputError(str(out), "output", str(out), f"a folder kegel may write its results into: it "
+                                                            f"{exc.reason}{hint}") from None
     except OutputLocked as exc:
         raise KegelInputError(str(out), "output", str(out), f"a folder no other kegel run is writing to ({exc})") from None
     except OSError as exc:

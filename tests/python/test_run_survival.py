@@ -25,7 +25,9 @@ def _kegel(*args: str) -> subprocess.Popen:
 
 
 def _stream_points(folder: Path) -> int:
-    f = folder / "points.jsonl"
+    from kegel.io import staging_path
+
+    f = staging_path(folder) / "points.jsonl"  # a run computes in its staging folder (issue 28)
     return max(0, len(f.read_text().splitlines()) - 1) if f.is_file() else 0
 
 
@@ -75,21 +77,24 @@ def test_a_live_run_owns_its_output_folder(tmp_path):
     assert (out / "results.json").is_file() and not lock.exists()
 
 
-def test_a_new_run_removes_the_previous_runs_files_first(tmp_path):
-    """A run of another scene in the same folder removes the older summary files and stray
-    temporary plots before it computes, so an interrupted run never leaves old files looking current."""
+def test_a_new_run_keeps_the_previous_runs_files_until_it_has_finished(tmp_path):
+    """A run of another scene in the same folder computes in its staging folder: interrupted, it
+    leaves the previous run's files as they were (issue 28: before, it removed them when it
+    started, so the folder held neither set) and its finished points beside them for a resume."""
+    from kegel.io import staging_path
+
     out = tmp_path / "run"
-    out.mkdir()
-    for name in ("results.json", "results.csv", "torque.png", ".torque.abc123.png", ".results.json.x.tmp"):
-        (out / name).write_text("old")
+    assert run_kegel("run", "examples/32216_table1.toml", "--set", 'operating.speed="2000 rpm"', "--set",
+                     'operating.temperature="50 degC"', "--output", str(out)).returncode == 0
+    old = {p.name: p.read_bytes() for p in out.iterdir()}
     proc = _kegel("run", SCENE, "--output", str(out))
     t0 = time.monotonic()
     while _stream_points(out) < 1 and proc.poll() is None and time.monotonic() - t0 < 120:
         time.sleep(0.05)
     proc.send_signal(signal.SIGINT)
     proc.communicate(timeout=60)
-    left = sorted(p.name for p in out.iterdir())
-    assert left == ["points.jsonl"], left
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == old
+    assert sorted(p.name for p in staging_path(out).iterdir()) == ["points.jsonl"]
 
 
 def test_an_unwritable_output_is_found_before_computing(tmp_path):
@@ -125,10 +130,14 @@ def test_a_full_disk_gives_one_line_and_the_run_resumes(tmp_path, size):
         assert res.returncode == 1, res.stderr
         assert "Traceback" not in res.stderr
         assert "No space left on device" in res.stderr and str(disk / "out") in res.stderr
-        left = sorted(p.name for p in (disk / "out").iterdir())
+        from kegel.io import staging_path
+
+        stage = staging_path(disk / "out")  # the run computes here; out is written when it has finished
+        left = sorted(p.name for p in stage.iterdir())
         assert left == ["points.jsonl"], left
+        assert not (disk / "out").exists()
         kept = 0  # whole lines only: the disk cut the last one
-        for line in (disk / "out" / "points.jsonl").read_text().splitlines()[1:]:
+        for line in (stage / "points.jsonl").read_text().splitlines()[1:]:
             try:
                 json.loads(line)
                 kept += 1
@@ -150,14 +159,15 @@ def test_a_resumed_stream_drops_the_cut_line_before_appending(tmp_path):
     from kegel.io import RunFolder
 
     key = {"scene": "s"}
-    with RunFolder(tmp_path, key, ()) as folder:
+    out = tmp_path / "out"
+    with RunFolder(out, key, ()) as folder:
         assert folder.open() == {}
         folder.add({"index": 0, "x": 1.0})
-    with open(tmp_path / RunFolder.STREAM, "a", encoding="utf-8") as fh:
+    with open(folder.stream_path, "a", encoding="utf-8") as fh:
         fh.write('{"point": {"index": 1, "x"')  # the interrupt cut this line
-    with RunFolder(tmp_path, key, ()) as folder:
+    with RunFolder(out, key, ()) as folder:
         assert sorted(folder.open()) == [0]
         folder.add({"index": 1, "x": 2.0})
-    with RunFolder(tmp_path, key, ()) as folder:
+    with RunFolder(out, key, ()) as folder:
         done = folder.open()
     assert sorted(done) == [0, 1] and done[1]["x"] == 2.0
