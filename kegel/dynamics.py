@@ -10,6 +10,12 @@ the equations and the contact models.
 :func:`dynamic_model` builds the model of a bearing; :func:`simulate` runs it along a speed
 profile and returns a :class:`DynamicResult` (time series, steady-state averages with their
 spread, power balance); :func:`write_result` writes it (JSON, CSV, VTK series, plots) atomically.
+
+Steady state is detected, not assumed (:func:`settling`): the drive torque, the outer-ring torque
+and the cage speed must have settled, by the drift-and-spread test on window means that the CFD
+uses too (:func:`kegel.steady.settled_window`), on windows of a roller pass. The steady
+figures are the means over the settled part only; a run whose signals have not settled says so
+(``steady["settled"]`` false, with the reason and the remaining drift).
 """
 
 from __future__ import annotations
@@ -30,12 +36,16 @@ from .data import BearingData, MaterialData
 from .errors import KegelInputError
 from .geometry import BearingGeometry
 from .quasi_static import bearing_friction, bearing_model, load_distribution
+from .steady import SettledWindow, settled_window
 from .tribology import cage_speed_rad_s
 
 D = _core.dynamics
 
 __all__ = [
     "DAMPING_TIME_S",
+    "STEADY_HOLD_PASSES",
+    "STEADY_SIGNALS",
+    "STEADY_TOLERANCE",
     "DynamicResult",
     "SimulationDiverged",
     "cage_mass_properties",
@@ -43,8 +53,26 @@ __all__ = [
     "write_result",
     "write_vtk_series",
     "dynamic_model",
+    "settling",
     "simulate",
 ]
+
+#: The signals that must have settled before a dynamic run's means are its steady answer: the
+#: drive torque (what the shaft pays), the outer-ring torque (what a rig measures; it differs from
+#: the drive torque by the inertia torques of a speed change) and the cage speed (its free flight
+#: in the pocket clearance after a speed change).
+STEADY_SIGNALS = ("drive_torque_Nm", "outer_ring_torque_Nm", "cage_speed_rad_s")
+#: Relative tolerance of the steady test (:func:`settling`): the remaining change, the last
+#: roller pass's change and the trend across the averaging window of every signal within 0.5 %
+#: of its level. A numerical setting (what "settled" means), not a physical parameter: it sits
+#: below the 2-3 % at which the dynamic and quasi-static solutions are compared.
+STEADY_TOLERANCE = 5e-3
+#: Windows over which the test must keep passing: the settled part (from the first passing
+#: check point's last two windows to the end) is at least 2 + 2 = 4 windows long. With windows
+#: of one roller pass (a load that varies around the bearing) that is, for the 32216, 8.8 ms at
+#: 4000 rpm, 17.7 ms at 2000 rpm and 71 ms at 500 rpm; with a quarter pass (pure axial load, the
+#: signals flat) a quarter of it.
+STEADY_HOLD_PASSES = 2.0
 
 #: Stiffness-proportional contact damping time when the friction file gives none: d_max = tau x
 #: the contact stiffness at delta_max (Eq. 2). The value and its source (Kraemer) live in
@@ -140,12 +168,16 @@ class DynamicResult:
 
     ``series`` maps a name to an array over ``time_s``; per-roller quantities are arrays of shape
     (time, Z). ``steady`` holds the means and standard deviations over the averaging window
-    (the last ``average_fraction`` of the run).
+    ``window_start_s``-``window_end_s``: the settled part of the run (:func:`settling`) when
+    ``steady["settled"]``, otherwise the last ``average_fraction`` of the run (figures that are
+    not a steady answer); ``steady["settling"]`` says why (the test's window, tolerance, the
+    remaining drift of every signal), ``steady["drift_relative"]`` is the largest remaining
+    drift.
     """
 
     time_s: np.ndarray
     series: dict[str, np.ndarray]
-    steady: dict[str, float]
+    steady: dict[str, Any]
     stats: dict[str, Any]
     states: np.ndarray           # the state vectors at the output times (for VTK, restarts)
     quadratures: np.ndarray      # time integrals of QUADRATURES at the output times
@@ -221,21 +253,72 @@ def _interval_means(t: np.ndarray, Q: np.ndarray) -> dict[str, np.ndarray]:
     return {f"mean_{k}": m[:, i] for i, k in enumerate(QUADRATURES)}
 
 
-def _steady(t: np.ndarray, series: dict[str, np.ndarray], Q: np.ndarray, fraction: float) -> dict[str, float]:
-    """Means over the last ``fraction`` of the run (from the quadratures: exact time means),
-    spreads of the interval means there, and the power balance."""
-    i0 = int(np.searchsorted(t, t[0] + (1.0 - fraction) * (t[-1] - t[0])))
-    i0 = min(i0, len(t) - 2)
-    span = t[-1] - t[i0]
-    out: dict[str, float] = {"window_start_s": float(t[i0]), "window_end_s": float(t[-1])}
+def settling(t: np.ndarray, Q: np.ndarray, g: BearingGeometry, final_speed_rad_s: float, *,
+             output_interval_s: float, tol: float = STEADY_TOLERANCE) -> SettledWindow:
+    """Where the run's :data:`STEADY_SIGNALS` have settled (:func:`kegel.steady.settled_window`).
+
+    The window of the test is a roller pass at the final speed of the profile, the time
+    ``P = 2 pi / (Z w_c)`` between two rollers passing a point of the outer ring (w_c the
+    pure-rolling cage speed): the torque of a bearing under radial load or tilt varies with it,
+    and a window of one pass averages that out. Under a load the same for every roller (pure
+    axial load) the signals do not vary with the pass, and shorter windows judge them in a
+    shorter run: the windows P / 4, P / 2 and P are tried in turn, and the first that finds the
+    signals settled decides. (A pass's variation fails the shorter windows' spread test, so it
+    never passes as steady; a slow creep fails the trend test at any window.) The test must
+    pass over :data:`STEADY_HOLD_PASSES` windows, so the settled part is at least four windows
+    long. Windows are at least two output intervals; a sixteenth of the run when the profile
+    ends at standstill. The torques are judged against the larger of the two torques' levels
+    (the outer-ring torque of a light-load point is small beside its drive torque), the cage
+    speed against at least 1 % of the ring speed. Without a settled window the result is the
+    one-pass window's, with its reason.
+
+    Parameters
+    ----------
+    t, Q
+        Output times and the quadratures (:data:`QUADRATURES`, time integrals) there.
+    final_speed_rad_s
+        The inner ring's speed at the end of the profile.
+    """
+    w_c = abs(cage_speed_rad_s(g, abs(final_speed_rad_s))) if final_speed_rad_s else 0.0
+    span = float(t[-1] - t[0]) if len(t) else 0.0
+    one_pass = 2 * math.pi / (g.roller_count * w_c) if w_c > 0 else span / 16.0
+    integrals = {k: Q[:, QUADRATURES.index(k)] for k in STEADY_SIGNALS}
+    result = None
+    for fraction in (0.25, 0.5, 1.0):
+        window = max(fraction * one_pass, 2.0 * output_interval_s)
+        last = {}
+        if len(t) > 1:
+            lo = max(float(t[0]), float(t[-1]) - window)
+            for k, integral in integrals.items():
+                last[k] = abs(float(integral[-1] - np.interp(lo, t, integral)) / max(float(t[-1]) - lo, 1e-300))
+        torque_floor = max(last.get("drive_torque_Nm", 0.0), last.get("outer_ring_torque_Nm", 0.0), 1e-9)
+        floors = {"drive_torque_Nm": torque_floor, "outer_ring_torque_Nm": torque_floor,
+                  "cage_speed_rad_s": max(0.01 * abs(final_speed_rad_s), 1e-9)}
+        result = settled_window(t, integrals, window, tol, floors=floors, hold=STEADY_HOLD_PASSES * window,
+                                time_unit=("ms", 1e3))
+        if result.settled:
+            break
+    return result
+
+
+def _steady(t: np.ndarray, series: dict[str, np.ndarray], Q: np.ndarray, start_s: float) -> dict[str, Any]:
+    """Means over ``start_s``-end (from the quadratures: exact time means; interpolated at a
+    start between outputs), spreads of the interval means there, and the power balance."""
+    t_end = float(t[-1])
+    start_s = min(max(float(start_s), float(t[0])), float(t[-2]))
+    span = t_end - start_s
+    i0 = int(np.searchsorted(t, start_s, side="right"))  # the first output after the start
+    out: dict[str, Any] = {"window_start_s": start_s, "window_end_s": t_end}
     for i, k in enumerate(QUADRATURES):
-        out[k] = float((Q[-1, i] - Q[i0, i]) / span)
-        x = series[f"mean_{k}"][i0 + 1:]
+        out[k] = float((Q[-1, i] - np.interp(start_s, t, Q[:, i])) / span)
+        x = series[f"mean_{k}"][i0:]
         out[k.rsplit("_", 1)[0] + "_std"] = float(np.std(x)) if len(x) else 0.0
-    out["inner_speed_rad_s"] = float(np.trapezoid(series["inner_speed_rad_s"][i0:], t[i0:]) / span)
+    w = series["inner_speed_rad_s"]
+    out["inner_speed_rad_s"] = float(np.trapezoid(np.concatenate(([np.interp(start_s, t, w)], w[i0:])),
+                                                  np.concatenate(([start_s], t[i0:]))) / span)
     out["power_contacts_W"] = sum(out[f"power_{c}_{m}_W"] for c in CONTACTS for m in MECHANISMS)
     E = series["kinetic_energy_J"]
-    dE = float(E[-1] - E[i0]) / span
+    dE = float(E[-1] - np.interp(start_s, t, E)) / span
     out["kinetic_energy_rate_W"] = dE
     out["power_dissipated_W"] = (out["power_contacts_W"] + out["cage_power_W"] + out["damping_power_W"]
                                  + out["external_power_W"])
@@ -277,6 +360,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              axial_N: float | None = None, axial_offset_m: float | None = None, radial_N: float = 0.0,
              misalignment_rad: float = 0.0, slices: int = 20, method: str = "independent", cage: bool = True,
              output_interval_s: float = 1e-4, average_fraction: float = 0.5, rtol: float = 1e-7,
+             steady_tolerance: float = STEADY_TOLERANCE,
              atol_velocity_m_s: float = 1e-8,
              damping_time_s: float | None = None, elements: Sequence[Any] = (), progress: bool = False,
              checkpoint: str | Path | None = None, checkpoint_interval_s: float = 5e-3,
@@ -299,7 +383,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     output_interval_s
         Spacing of the recorded outputs.
     average_fraction
-        The last part of the run that the steady-state averages cover.
+        The last part of the run that the averages cover when the run has not settled (its
+        figures are then not a steady answer: ``steady["settled"]`` is false).
+    steady_tolerance
+        Relative tolerance of the steady test (:func:`settling`).
     elements
         Force elements (``kegel._core.dynamics.DragElement``, ``PythonForceElement``) acting on the
         rollers and the cage: the hydraulic forces of the coupling layer.
@@ -490,7 +577,21 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
              "slices": slices, "method": method, "cage": cage, "rtol": rtol}
-    steady = _steady(t, series, Q, average_fraction) if len(t) > 1 else {}
+    steady: dict[str, Any] = {}
+    if len(t) > 1:
+        settled = settling(t, Q, g, float(np.interp(t[-1], prof[:, 0], prof[:, 1])),
+                           output_interval_s=output_interval_s, tol=steady_tolerance)
+        ok = settled.settled and finished
+        fallback = t[min(int(np.searchsorted(t, t[0] + (1.0 - average_fraction) * (t[-1] - t[0]))), len(t) - 2)]
+        steady = _steady(t, series, Q, settled.start if ok else fallback)
+        info = settled.as_dict()
+        info["window_s"], info["hold_s"] = info.pop("window"), info.pop("hold")
+        info["settled_from_s"], info["end_s"] = info.pop("start"), info.pop("end")
+        if not finished:
+            info["reason"] = "the run stopped before its end: " + (message or "the integration failed")
+        steady["settled"] = ok
+        steady["drift_relative"] = info["drift_relative"]
+        steady["settling"] = info
     res = DynamicResult(time_s=t, series=series, steady=steady, stats=stats, states=np.asarray(states), quadratures=Q,
                         runtime_s=time.perf_counter() - wall0, finished=finished, message=message)
     if not finished and raise_on_failure:
@@ -781,7 +882,8 @@ def plot_result(res: DynamicResult, path: str | Path) -> str:
     a.legend(fontsize=7)
     st = res.steady
     if st:
-        fig.suptitle(f"steady means over {st['window_start_s'] * 1e3:.1f}-{st['window_end_s'] * 1e3:.1f} ms: "
+        what = "steady means" if st.get("settled") else "NOT SETTLED: means"
+        fig.suptitle(f"{what} over {st['window_start_s'] * 1e3:.1f}-{st['window_end_s'] * 1e3:.1f} ms: "
                      f"outer-ring torque {st['outer_ring_torque_Nm'] * 1e3:.2f} mN m "
                      f"(std of interval means {st['outer_ring_torque_std'] * 1e3:.2f}), power balance "
                      f"{100 * st['power_balance_error']:+.2f} %; wall {res.runtime_s:.1f} s", fontsize=9)
