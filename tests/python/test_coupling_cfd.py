@@ -249,3 +249,66 @@ def test_at_light_load_the_oil_slows_cage_and_rollers_as_newton_says(b32208, run
     lo = (Z * F * r + M_c) * t[-1] / (Z * 1.5 * g.roller_mass_kg * r * r + I_c)
     hi = 1.3 * (Z * F * r + M_c) * t[-1] / (Z * g.roller_mass_kg * r * r + I_c)
     assert lo <= drop <= hi, (lo, drop, hi)
+
+
+def _scene(solution: str, *, interval: str = "0.5 ms", level: str = "flooded") -> str:
+    dyn = (f'solution = "dynamic"\n[dynamic]\nduration = "8 ms"\noutput_interval = "{interval}"\nthreads = 1\n'
+           if solution == "dynamic" else "")
+    return f"""
+[bearing]
+designation = "32208"
+[lubricant]
+name = "FVA3"
+[operating]
+axial_load = "1 kN"
+speed = "2000 rpm"
+temperature = "50 degC"
+[lubrication]
+mode = "oil_bath"
+oil_level = "{level}"
+[model]
+fidelity = "fast"
+hydraulic = "cfd"
+cfd_results = "{CFD}"
+{dyn}
+[output]
+directory = "out"
+"""
+
+
+def _run(tmp_path: Path, name: str, text: str) -> dict:
+    from conftest import run_kegel
+
+    d = tmp_path / name
+    d.mkdir()
+    (d / "s.toml").write_text(text)
+    res = run_kegel("run", "s.toml", cwd=d, timeout=600)
+    assert res.returncode == 0, res.stderr
+    return json.loads((d / "out" / "results.json").read_text())["points"][0]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("level", ["flooded", "shaft_center"])
+def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_path, runs, level):
+    """The shipped results in the quasi-static and the dynamic solution; in the dynamic one the
+    hydraulic torque is what the bodies take (through the contacts) plus the rings' churning, and
+    the bodies' share is the CFD's within what the cage slip changes (each law's exponent times
+    the slip of its body's speed, at most 2.1 x |slip| + 0.2 %); the figures do not depend on the
+    output interval."""
+    f, d = next((f, d) for f, d in runs if f"2000rpm_{level}" in str(f))
+    loss = d["loss_torque_at_shaft_Nm"]
+    qs = _run(tmp_path, "qs", _scene("quasi_static", level=level))
+    assert qs["hydraulic_torque_Nm"] == pytest.approx(loss, rel=1e-12)
+    assert qs["total_torque_Nm"] == pytest.approx(qs["friction_torque_Nm"] + loss, rel=1e-12)
+    dyn = _run(tmp_path, "dyn", _scene("dynamic", level=level))
+    h = dyn["hydraulic"]
+    rings = -(d["torques_Nm"]["inner_ring"]["total"] + d["torques_Nm"]["shaft"]["total"])
+    assert h["inner_ring_and_shaft_Nm"] == pytest.approx(rings, rel=1e-12)
+    assert dyn["hydraulic_torque_Nm"] == pytest.approx(h["roller_drag_on_the_bodies_Nm"] + rings, rel=1e-12)
+    assert h["bodies_share_in_the_cfd_Nm"] + rings == pytest.approx(loss, rel=1e-12)
+    slip = abs(dyn["cage_slip"])
+    assert abs(h["roller_drag_on_the_bodies_Nm"] / h["bodies_share_in_the_cfd_Nm"] - 1) <= 2.1 * slip + 2e-3
+    # the output interval: the steady figures are time integrals (quadratures), not samples
+    coarse = _run(tmp_path, "coarse", _scene("dynamic", interval="2 ms", level=level))
+    for k in ("cage_slip", "friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm"):
+        assert coarse[k] == pytest.approx(dyn[k], rel=1e-5, abs=1e-9), k
