@@ -12,11 +12,12 @@ import math
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from . import _core
 from ._toml import read_toml, require_number, require_str, require_table
 from .errors import KegelInputError
+from .units import parse_quantity
 from .estimate import (BoundaryDimensions, EstimateError, ReferenceDesign, estimate_internal_geometry,
                        estimate_oil)
 
@@ -28,7 +29,11 @@ __all__ = [
     "available_bearings",
     "available_lubricants",
     "available_materials",
+    "BEARING_SCENE_KEYS",
+    "LUBRICANT_SCENE_KEYS",
     "bearing_from_boundary",
+    "bearing_from_scene",
+    "lubricant_from_scene",
     "lubricant_from_viscosities",
     "series_designations",
     "load_bearing",
@@ -320,6 +325,89 @@ def bearing_from_boundary(boundary: BoundaryDimensions, *, source: str | Path, k
         estimated=estimated,
         estimate_note=est.note + "; roughness and Zhou-Hoeprich coefficients as the reference bearing",
     )
+
+
+#: Keys of a scene's ``[bearing]`` table beside ``designation`` and ``material``: boundary
+#: dimensions (lengths with units), e or alpha, Z (optional), C0r (a force), Y (optional).
+BEARING_SCENE_KEYS = ("d", "D", "T", "B", "C", "e", "alpha", "Z", "C0r", "Y")
+#: Keys of a scene's ``[lubricant]`` table for an oil estimated from its viscosities.
+LUBRICANT_SCENE_KEYS = ("nu40_mm2_s", "iso_vg", "nu100_mm2_s", "density_15C_kg_m3", "description")
+
+
+def bearing_from_scene(table: dict[str, Any], *, source: Callable[[str], str]) -> BearingData:
+    """The bearing of a scene's ``[bearing]`` table: a designation (a shipped file, the series
+    table, or a path), or boundary dimensions (``d``, ``D``, ``T``, ``B``, ``C`` as lengths, ``e`` or
+    ``alpha``, ``C0r`` as a force, optional ``Z`` and ``Y``; ``designation`` then only names it).
+
+    Parameters
+    ----------
+    table
+        The ``[bearing]`` table as read.
+    source
+        Maps a dotted key to the source to name in messages (the scene file or ``--set``).
+    """
+    given = [k for k in BEARING_SCENE_KEYS if k in table]
+    if not given:
+        if "designation" not in table:
+            raise KegelInputError(source("bearing.designation"), "bearing.designation", None,
+                                  "a bearing designation such as \"32216\" or \"30210\", or boundary dimensions "
+                                  "(bearing.d, D, T, B, C, e or alpha, C0r; docs/bearings_and_oils.md)")
+        return load_bearing(str(table["designation"]), source=source("bearing.designation"),
+                            key="bearing.designation")
+    missing = [k for k in ("d", "D", "T", "B", "C", "C0r") if k not in table]
+    if missing:
+        k = f"bearing.{missing[0]}"
+        raise KegelInputError(source(k), k, None, "with boundary dimensions, all of bearing.d, D, T, B, C, C0r "
+                              "(lengths and a force with units, e.g. d = \"50 mm\", C0r = \"91.5 kN\")")
+    if ("e" in table) == ("alpha" in table):
+        raise KegelInputError(source("bearing.e"), "bearing.e", table.get("e"),
+                              "exactly one of bearing.e (ISO 281 calculation factor) or bearing.alpha (contact angle)")
+
+    def q(k: str, kind: str) -> float:
+        return parse_quantity(table[k], kind, source=source(f"bearing.{k}"), key=f"bearing.{k}")
+
+    def num(k: str, *, integer: bool = False) -> float:
+        return require_number(table, k, source(f"bearing.{k}"), "bearing.", positive=True, integer=integer)
+
+    alpha = math.atan(num("e") / 1.5) if "e" in table else q("alpha", "angle")
+    designation = str(table.get("designation", "custom"))
+    boundary = BoundaryDimensions(
+        designation=designation, bore_diameter_m=q("d", "length"), outer_diameter_m=q("D", "length"),
+        total_width_m=q("T", "length"), cone_width_m=q("B", "length"), cup_width_m=q("C", "length"),
+        contact_angle_rad=alpha, C0r_N=q("C0r", "force"),
+        roller_count=int(num("Z", integer=True)) if "Z" in table else None)
+    try:
+        boundary.check()
+    except EstimateError as exc:
+        raise KegelInputError(source("bearing"), "bearing", designation, f"boundary dimensions of a tapered roller "
+                              f"bearing ({exc})") from None
+    return bearing_from_boundary(boundary, source=source("bearing"), key="bearing",
+                                 axial_load_factor_Y=num("Y") if "Y" in table else None)
+
+
+def lubricant_from_scene(table: dict[str, Any], *, source: Callable[[str], str]) -> LubricantData:
+    """The lubricant of a scene's ``[lubricant]`` table: ``name`` of a shipped oil or a path, or an
+    oil estimated from ``nu40_mm2_s`` (or ``iso_vg``), ``nu100_mm2_s`` and ``density_15C_kg_m3``
+    (``name`` then only names it)."""
+    given = [k for k in LUBRICANT_SCENE_KEYS if k in table and k != "description"]
+    if not given:
+        if "name" not in table:
+            raise KegelInputError(source("lubricant.name"), "lubricant.name", None,
+                                  "a lubricant name such as \"FVA3\", or viscosities (lubricant.nu40_mm2_s or iso_vg, "
+                                  "nu100_mm2_s, density_15C_kg_m3; docs/bearings_and_oils.md)")
+        return load_lubricant(str(table["name"]), source=source("lubricant.name"), key="lubricant.name")
+    src = source("lubricant")
+    nu40 = _nu40_mm2_s(table, src, "lubricant.")
+    for k in ("nu100_mm2_s", "density_15C_kg_m3"):
+        if k not in table:
+            raise KegelInputError(src, f"lubricant.{k}", None, "with viscosities, all of lubricant.nu40_mm2_s (or "
+                                  "iso_vg), nu100_mm2_s and density_15C_kg_m3 (numbers in the units of their names)")
+    name = table.get("name", f"oil nu40 {nu40:g}")
+    return lubricant_from_viscosities(
+        str(name), nu40_mm2_s=nu40,
+        nu100_mm2_s=require_number(table, "nu100_mm2_s", src, "lubricant.", positive=True),
+        density_15C_kg_m3=require_number(table, "density_15C_kg_m3", src, "lubricant.", positive=True),
+        description=str(table.get("description", "")), source=src, key="lubricant")
 
 
 def _contact_angle(table: dict[str, Any], path: str | Path, prefix: str) -> float:

@@ -43,6 +43,13 @@ Codes
     The supply model's starvation factor (SKF's ``phi_rs``) lies below Biboulet-Houpert's Eq. 44
     at its most starved computed inlet (S = 2, factor 0.2001): the contacts get that factor, a
     smaller reduction than SKF's.
+``geometry_estimated``
+    The bearing's internal geometry (pitch diameter, roller size and count, profile, roughness) was
+    estimated from its boundary dimensions (:mod:`kegel.estimate`: a designation of the ISO 355
+    series table, a ``[boundary]`` bearing file, or boundary dimensions in the scene), not measured.
+``lubricant_estimated``
+    The oil's Vogel law and pressure-viscosity coefficient were estimated from its viscosities at
+    40 and 100 degC (:mod:`kegel.estimate`); its other properties are those of FVA 3.
 ``cfd_interpolated`` / ``cfd_missing``
     A study's CFD loss interpolated between computed speeds (with its error), or not computed.
 """
@@ -201,6 +208,15 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
                               scene.lubrication.oil_level_m >= scene.bearing.outer_diameter_m)
         if w:
             out.append(w)
+    estimated = getattr(scene.bearing, "estimated", ())
+    if estimated:
+        out.append(Warning_("geometry_estimated", f"bearing {scene.bearing.designation}: internal geometry estimated "
+                            f"from its boundary dimensions ({', '.join(e.replace('_', ' ') for e in estimated)}), "
+                            "not measured (kegel.estimate; docs/bearings_and_oils.md)"))
+    if getattr(scene.lubricant, "estimated", ()):
+        out.append(Warning_("lubricant_estimated", f"lubricant {scene.lubricant.name}: Vogel law and pressure-viscosity "
+                            "coefficient estimated from its viscosities at 40 and 100 degC (ASTM D341, So-Klaus), "
+                            "its other properties those of FVA 3 (kegel.estimate; docs/bearings_and_oils.md)"))
     for row in point.get("study") or ():
         for w in row.get("warnings", ()):
             if all(w["code"] != o.code for o in out):

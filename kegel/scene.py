@@ -11,11 +11,16 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
     description = "..."                      # optional
 
     [bearing]
-    designation = "32216"                    # or a path to a bearing .toml file
+    designation = "32216"                    # or "30210" (the ISO 355 series table), or a file
     material = "bearing_steel"               # optional
+    # or boundary dimensions (internal geometry estimated, flagged geometry_estimated):
+    # d = "50 mm", D = "90 mm", T = "21.75 mm", B = "20 mm", C = "17 mm", e = 0.43 (or
+    # alpha = "16 deg"), C0r = "91.5 kN", Z = 18 (optional), Y = 1.4 (optional)
 
     [lubricant]
     name = "FVA3"                            # or a path to a lubricant .toml file
+    # or an oil from its viscosities (laws estimated, flagged lubricant_estimated):
+    # nu40_mm2_s = 220 (or iso_vg = 220), nu100_mm2_s = 19, density_15C_kg_m3 = 890
 
     [operating]                              # each quantity: one value, a list, or a range
     axial_load = "6 kN"                      # force-controlled (> 0) ... or instead:
@@ -83,7 +88,8 @@ from typing import Any
 import numpy as np
 
 from ._toml import read_toml
-from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
+from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene, load_bearing, load_lubricant,
+                   load_material, lubricant_from_scene)
 from .errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
@@ -125,8 +131,10 @@ MAX_CONTACT_FILM_LIMIT_M = 0.01
 
 _ALLOWED: dict[str, set[str]] = {
     "scene": {"name", "description"},
-    "bearing": {"designation", "material"},
-    "lubricant": {"name"},
+    # a designation, or boundary dimensions (kegel.data.BEARING_SCENE_KEYS, estimated geometry)
+    "bearing": {"designation", "material", "d", "D", "T", "B", "C", "e", "alpha", "Z", "C0r", "Y"},
+    # a name, or viscosities (kegel.data.LUBRICANT_SCENE_KEYS, estimated laws)
+    "lubricant": {"name", "nu40_mm2_s", "iso_vg", "nu100_mm2_s", "density_15C_kg_m3", "description"},
     "operating": {
         "axial_load", "axial_offset", "radial_load", "tilt_moment", "misalignment", "speed",
         "temperature",
@@ -985,15 +993,12 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
             raise reader.error(f"scene.{key}", meta[key], "a string")
 
     b = raw["bearing"]
-    if "designation" not in b:
-        raise reader.error("bearing.designation", None, "a bearing designation such as \"32216\"")
-    bearing = load_bearing(str(b["designation"]), source=reader.src("bearing.designation"), key="bearing.designation")
+    # a designation (shipped data, the ISO 355 series table, a file) or boundary dimensions
+    bearing = bearing_from_scene(b, source=reader.src)
     material = load_material(str(b.get("material", "bearing_steel")), source=reader.src("bearing.material"),
                              key="bearing.material")
-    lub_table = raw["lubricant"]
-    if "name" not in lub_table:
-        raise reader.error("lubricant.name", None, "a lubricant name such as \"FVA3\"")
-    lubricant = load_lubricant(str(lub_table["name"]), source=reader.src("lubricant.name"), key="lubricant.name")
+    # a shipped oil's name (or a file), or viscosities from which its laws are estimated
+    lubricant = lubricant_from_scene(raw["lubricant"], source=reader.src)
 
     points, swept = _operating_points(reader, raw["operating"], bearing)
     # the bearing's derived geometry must fit its envelope (a custom data file may not)

@@ -20,8 +20,8 @@ def expect_error(path, *fragments, overrides=()):
 
 
 def test_unknown_bearing(write_scene):
-    p = write_scene(replace={'designation = "32216"': 'designation = "32217"'})
-    e = expect_error(p, "bearing.designation", "'32217'", "a known bearing", "32208", "32216")
+    p = write_scene(replace={'designation = "32216"': 'designation = "32299"'})
+    e = expect_error(p, "bearing.designation", "'32299'", "a known bearing", "32208", "32216")
     assert e.key == "bearing.designation"
 
 
