@@ -323,7 +323,7 @@ def bearing_from_boundary(boundary: BoundaryDimensions, *, source: str | Path, k
             ref_data.assumed_cage_pocket_clearance_circumferential_ratio),
         assumed_cage_pocket_clearance_axial_ratio=ref_data.assumed_cage_pocket_clearance_axial_ratio,
         estimated=estimated,
-        estimate_note=est.note + "; roughness and Zhou-Hoeprich coefficients as the reference bearing",
+        estimate_note=est.note + "; Zhou-Hoeprich coefficients as the reference bearing",
     )
 
 
@@ -526,7 +526,8 @@ def _nu40_mm2_s(tab: dict[str, Any], path: str | Path, prefix: str) -> float:
     """nu40 from ``nu40_mm2_s`` or ``iso_vg`` (ISO 3448: the VG is the mid-point nu40); exactly one."""
     if ("nu40_mm2_s" in tab) == ("iso_vg" in tab):
         raise KegelInputError(path, f"{prefix}nu40_mm2_s", tab.get("nu40_mm2_s"),
-                              "exactly one of nu40_mm2_s or iso_vg (ISO 3448 grade, its mid-point viscosity at 40 degC)")
+                              "exactly one of nu40_mm2_s or iso_vg (ISO 3448 grade, its mid-point viscosity at "
+                              "40 degC)")
     if "iso_vg" in tab:
         vg = require_number(tab, "iso_vg", path, prefix, positive=True)
         if vg not in ISO_VG_GRADES:

@@ -260,7 +260,8 @@ def estimate_internal_geometry(b: BoundaryDimensions, ref: ReferenceDesign, *,
     r_e = k_e * Dw
     Lwe = L - 2.0 * r_e
     note = ("internal geometry estimated from the boundary dimensions (kegel.estimate): " + "; ".join(steps)
-            + f"; r_e = {k_e:.4f} D_w, roller profile and roughness transferred from {ref.name}")
+            + f"; r_e = {k_e:.4f} D_w, roller profile (a_p, c_p = L_we, k_p = 2 r_e) and roughness transferred "
+            f"from {ref.name}")
     return InternalEstimate(
         pitch_diameter_m=d_m, roller_mean_diameter_m=Dw, roller_length_m=L, roller_count=int(Z),
         edge_radius_m=r_e, profile_a_p=ref.profile_a_p, profile_c_p_m=Lwe, profile_d_p_m=0.0,
