@@ -148,6 +148,9 @@ def test_series_table_rows_as_printed_and_every_row_fits_its_envelope():
     m = D.load_material("bearing_steel")
     for name, row in table.items():
         assert row["e"] * row["Y"] == pytest.approx(0.6, abs=0.06), name   # ISO 281
+        code = name[3:].lstrip("/")                                         # bore code: 04 and up x 5 mm
+        bore = float(code) if "/" in name else {0: 10, 1: 12, 2: 15, 3: 17}.get(int(code), 5 * int(code))
+        assert row["d_mm"] == bore, name
         assert row["page"] and row["skf"].startswith(name), name            # source per row
         if name in ("32208", "32216"):
             continue  # shipped measured files take precedence
