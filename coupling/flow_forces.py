@@ -58,8 +58,8 @@ from .. import _core
 from ..errors import KegelInputError
 from ..geometry import BearingGeometry
 
-__all__ = ["CfdFlowForceLaw", "FlowForceLaw", "PowerLaw", "cfd_model_key", "flow_forces_from_cfd",
-           "flow_forces_from_correlation", "orbit_radius_m", "roller_axis_z"]
+__all__ = ["CfdFlowForceLaw", "FlowForceLaw", "PowerLaw", "body_drags", "cfd_model_key", "cfd_sweep", "fit_exponent",
+           "flow_forces_from_cfd", "flow_forces_from_correlation", "orbit_radius_m", "roller_axis_z"]
 
 #: Keys of a CFD result's ``point`` that define the CFD model: results that share them (speed
 #: aside) form one speed sweep. Every other key (mesh, cells across a gap, a periodic sector,
@@ -449,13 +449,3 @@ def orbit_radius_m(g: BearingGeometry) -> float:
     """Radius of the roller's centre of mass about the bearing axis, where the element's force
     acts (the mid-point is on the pitch circle; the centre of mass lies along the axis from it)."""
     return 0.5 * g.pitch_diameter_m + g.roller_com_offset_m * math.sin(g.roller_axis_angle_rad)
-
-
-def _density(result: dict[str, Any]) -> float:
-    """Oil density of a CFD result (its lubricant at its temperature)."""
-    from ..data import load_lubricant
-    from ..lubricant import lubricant_state
-
-    p = result["point"]
-    lub = load_lubricant(p.get("lubricant", "FVA3"))
-    return lubricant_state(lub, p["temperature_K"]).density_kg_m3
