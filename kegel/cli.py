@@ -528,7 +528,13 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
     scene = load_scene(args.scene, args.set or ())
     out_dir = Path(args.output) if args.output else scene.output_directory
-    result = run_scene(scene, out_dir, progress=args.format != "json", force=args.force)
+    options = None
+    if args.uncertainty:
+        from .uncertainty import UncertaintyOptions
+
+        options = UncertaintyOptions(crown_drop_fraction=args.crown_drop)
+    result = run_scene(scene, out_dir, progress=args.format != "json", force=args.force,
+                       uncertainty=options or False)
     if args.format == "json":
         _json_out({"scene": scene.name, "files": result.files, "runtime_s": result.runtime_s,
                    "points": result.points})
@@ -574,6 +580,8 @@ def _cmd_run(args: argparse.Namespace) -> int:
         print(f"  ... and {len(failed) - 10} more failed points (results.csv: columns converged, failure)")
     if any(p["axial_load_N"] is None for p in result.points):
         print("  * axial force carried at the prescribed axial offset")
+    if options is not None:
+        _print_band(result.points, options)
     if scene.study is not None:
         _print_study(result.points)
     print(f"results: {', '.join(v for k, v in result.files.items() if not k.endswith('plot'))}")
@@ -590,6 +598,25 @@ def _cmd_run(args: argparse.Namespace) -> int:
                   f"{Path(d['files']['json']).parent}")
     print(f"runtime: {result.runtime_s:.2f} s for {len(result.points)} operating point(s)")
     return _run_status(result.points)
+
+
+def _print_band(points: Sequence[dict[str, Any]], options: Any) -> None:
+    """The uncertainty band of each point (``kegel run --uncertainty``)."""
+    print(f"  uncertainty (kegel.uncertainty): crown drop a_p x (1 -+ {options.crown_drop_fraction:g}), "
+          f"{'the other slice model' if options.slice_model_variant else 'no slice-model variant'}; "
+          "band = smallest / largest friction torque of the nominal point and the variants")
+    for p in points[:MAX_TABLE_ROWS]:
+        u = p.get("uncertainty") or {}
+        if "friction_torque_low_Nm" not in u:
+            print(f"  point {p['index']}: no band ({u.get('note') or 'not solved'})")
+            continue
+        lo, hi = u["band_relative"]
+        ll = u.get("nominal_loaded_length_m")
+        length = (f", loaded length {ll * 1e3:.1f} of {u['roller_length_m'] * 1e3:.1f} mm" if ll else "")
+        print(f"  point {p['index']}: M_fric {p['friction_torque_Nm']:.4g} N m in [{u['friction_torque_low_Nm']:.4g}, "
+              f"{u['friction_torque_high_Nm']:.4g}] ({100 * lo:+.1f} / {100 * hi:+.1f} %){length}")
+    if len(points) > MAX_TABLE_ROWS:
+        print(f"  ... every point's band: results.csv (friction_torque_low_Nm, friction_torque_high_Nm)")
 
 
 def _run_status(points: Sequence[dict[str, Any]]) -> int:
@@ -753,6 +780,13 @@ def _parser() -> argparse.ArgumentParser:
             sp.add_argument("--force", action="store_true",
                             help="write into an output folder that holds files kegel did not write (they are kept; "
                                  "one with a name kegel writes is moved to kegel-replaced-<run id>/)")
+            sp.add_argument("--uncertainty", action="store_true",
+                            help="add each point's friction torque band: the point solved again with the crown "
+                                 "drop -+ CROWN_DROP and with the other slice model (3 extra solves per point; "
+                                 "quasi-static points)")
+            sp.add_argument("--crown-drop", type=float, default=0.25, metavar="FRACTION",
+                            help="relative change of the crown drop for --uncertainty (default 0.25: assumed, no "
+                                 "source gives a tolerance)")
     return p
 
 

@@ -422,6 +422,7 @@ def _torque_figure(lay: _Layout, meta: PlotMeta, source: str | None) -> "Figure"
             ax.plot(gx, tot, ls="-", marker="o", color=line.colour, label=f"total{suffix}")
             ax.plot(gx, fr, ls="--", marker="s", ms=4, color=line.colour, label=f"friction{suffix}")
             ys += tot + fr
+            ys += _band(ax, gx, good, us, line.colour, suffix, with_total=has_hyd)
             xs += gx
             if has_hyd:
                 hy = [(p.get("hydraulic_torque_Nm") or 0.0) * hs for p in good]
@@ -464,6 +465,31 @@ def _torque_figure(lay: _Layout, meta: PlotMeta, source: str | None) -> "Figure"
         notes.append(f"{hlabel} < {SMALL_HYDRAULIC:.0%} of the friction torque: own panel, own scale")
     _finish(fig, meta, "torque at the shaft", notes)
     return fig
+
+
+def _band(ax: "Axes", gx: list[float | None], pts: Sequence[dict[str, Any]], us: float, colour: str, suffix: str,
+          *, with_total: bool) -> list[float]:
+    """The uncertainty band of a line (``kegel run --uncertainty``, :mod:`kegel.uncertainty`): a
+    shaded band from the smallest to the largest friction torque of each point (and of the total,
+    with a hydraulic loss), an error bar for a single point. Returns the values drawn (for the
+    axis limits); nothing when a point of the line has no band."""
+    bands = [p.get("uncertainty") or {} for p in pts]
+    if not pts or not all("friction_torque_low_Nm" in u for u in bands):
+        return []
+    drawn: list[float] = []
+    keys = [("friction", "friction_torque")] + ([("total", "total_torque")] if with_total else [])
+    for i, (name, key) in enumerate(keys):
+        lo = [u[f"{key}_low_Nm"] * us for u in bands]
+        hi = [u[f"{key}_high_Nm"] * us for u in bands]
+        label = f"{name} band (crown, slice model){suffix}"
+        if len(gx) > 1:
+            ax.fill_between(gx, lo, hi, color=colour, alpha=0.18 if i == 0 else 0.10, lw=0, label=label)
+        else:
+            mid = [p[f"{key}_Nm"] * us for p in pts]
+            ax.errorbar(gx, mid, yerr=[[m - a for m, a in zip(mid, lo)], [b - m for m, b in zip(mid, hi)]],
+                        fmt="none", ecolor=colour, capsize=4, label=label)
+        drawn += lo + hi
+    return drawn
 
 
 def _segments(pts: Sequence[dict[str, Any]], source: str | None) -> list[tuple[tuple[str, str], str, Callable]]:

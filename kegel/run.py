@@ -21,7 +21,7 @@ import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
@@ -37,6 +37,9 @@ from .study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_row
 from .scene import Fidelity, Scene, static_equivalent_load_N
 from .tribology import cage_speed_rad_s, load_friction
 from . import _core
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .uncertainty import UncertaintyOptions
 
 __all__ = ["RunResult", "choose_fidelity", "preflight", "run_scene"]
 
@@ -86,20 +89,41 @@ class _Progress:
 
 def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: bool = True,
               on_point: Callable[[dict[str, Any]], None] | None = None, write: bool = True,
-              force: bool = False) -> RunResult:
+              force: bool = False, uncertainty: "bool | UncertaintyOptions" = False) -> RunResult:
     """Solve every operating point of a scene and write the results (see the module docstring);
     ``write=False`` keeps them in memory only (no files, ``files`` empty).
+
+    ``uncertainty`` (True or a :class:`kegel.uncertainty.UncertaintyOptions`) adds to every
+    quasi-static point its friction torque at the perturbed crown data and the other slice model
+    (three extra solves per point): ``point["uncertainty"]`` with the low/high band, the band
+    columns of results.csv and a band in torque.png (:mod:`kegel.uncertainty`).
 
     The results are computed in a staging folder beside the output folder and replace the
     previous results only when the run has finished (:class:`kegel.io.RunFolder`); an output
     folder holding files kegel did not write is refused unless ``force``. An interrupted run
     (Ctrl-C, SIGTERM, a full disk) resumes when run again with the same scene."""
     with signals_interrupt() if write else contextlib.nullcontext():
-        return _run_scene(scene, output_dir, progress=progress, on_point=on_point, write=write, force=force)
+        return _run_scene(scene, output_dir, progress=progress, on_point=on_point, write=write, force=force,
+                          uncertainty=_uncertainty_options(uncertainty))
+
+
+def _uncertainty_options(uncertainty: "bool | UncertaintyOptions | None") -> "UncertaintyOptions | None":
+    """The uncertainty options of a run (None: no band)."""
+    from .errors import KegelInputError
+    from .uncertainty import UncertaintyOptions
+
+    if uncertainty is None or uncertainty is False:
+        return None
+    if uncertainty is True:
+        return UncertaintyOptions()
+    if isinstance(uncertainty, UncertaintyOptions):
+        return uncertainty
+    raise KegelInputError("<argument>", "uncertainty", uncertainty, "true, false or a kegel.uncertainty.UncertaintyOptions")
 
 
 def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
-               on_point: Callable[[dict[str, Any]], None] | None, write: bool, force: bool) -> RunResult:
+               on_point: Callable[[dict[str, Any]], None] | None, write: bool, force: bool,
+               uncertainty: "UncertaintyOptions | None" = None) -> RunResult:
     t_start = time.perf_counter()
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
@@ -114,7 +138,7 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     cfd_runs = preflight(scene)
     study_cfd = read_study_cfd(scene)
     warn_log = WarningLog()
-    folder, done = _open_folder(scene, fid, out, force) if write else (None, {})
+    folder, done = _open_folder(scene, fid, out, force, uncertainty) if write else (None, {})
     work = folder.staging if folder is not None else out  # written here, moved to out when finished
     try:
         bar = _Progress(len(scene.operating_points), progress)
@@ -136,6 +160,8 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
                     point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
                 else:
                     point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
+                if uncertainty is not None:
+                    point["uncertainty"] = _point_band(scene, fid, op, op_friction, point, uncertainty)
                 point["lubricant_supply"] = supply.as_dict()
                 if scene.study is not None and point.get("solved", True):
                     point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model)
@@ -275,7 +301,22 @@ def _check_record(scene: Scene, p: dict[str, Any], staging: Path | None = None) 
     return None
 
 
-def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False):
+def _point_band(scene: Scene, fid: Fidelity, op, friction, point: dict[str, Any], options) -> dict[str, Any]:
+    """The uncertainty band of a solved point (:func:`kegel.uncertainty.point_uncertainty`);
+    quasi-static points only (a dynamic or not converged point says why it has none)."""
+    from .uncertainty import point_uncertainty
+
+    if fid.solution == "dynamic":
+        return {"inputs": options.as_dict(), "note": "not computed: the band is computed for quasi-static points"}
+    if not point.get("converged"):
+        return {"inputs": options.as_dict(), "note": "not computed: the nominal point did not converge"}
+    inner = point.get("roller_inner_N") or []
+    return point_uncertainty(scene, fid, op, friction, nominal_friction_Nm=point["friction_torque_Nm"],
+                             hydraulic_Nm=point.get("hydraulic_torque_Nm") or 0.0,
+                             inner_load_N=max(inner) if inner and max(inner) > 0 else None, options=options)
+
+
+def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False, uncertainty=None):
     """Take the output folder (lock, staging folder, stream of finished points); an interrupted
     run of the same scene, fidelity and kegel version resumes from the points it finished, each
     record checked (:func:`_check_record`)."""
@@ -289,6 +330,8 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False):
         written["dynamic"].pop("threads", None)
     key = {"scene": written, "fidelity": fid.as_dict(), "kegel_version": __version__,
            "core_version": _core.core_version()}
+    if uncertainty is not None:  # a run with the band resumes only from points that have it
+        key["uncertainty"] = uncertainty.as_dict()
     folder = RunFolder(out, key, SUMMARY_FILES, ("dynamic",), force=force,
                        validate=lambda p: _check_record(scene, p, folder.staging))
     try:
@@ -725,6 +768,11 @@ CSV_DERIVED = ("Lambda_min", "Lambda_min_contact", "hydraulic_source", "hydrauli
                "supply_rolling_force_factor_inner", "supply_rolling_force_factor_outer", "warnings")
 
 
+#: results.csv's band columns, present when the run computed the uncertainty (kegel.uncertainty)
+CSV_UNCERTAINTY = ("friction_torque_low_Nm", "friction_torque_high_Nm", "total_torque_low_Nm",
+                   "total_torque_high_Nm")
+
+
 def _csv_row(p: dict[str, Any]) -> list[Any]:
     lam = p.get("Lambda_min") or {}
     worst = min(lam, key=lambda k: lam[k]) if isinstance(lam, dict) and lam else None
@@ -752,11 +800,18 @@ def _csv(points: list[dict[str, Any]]) -> str:
     arrays are in results.json); the warnings column lists the point's warning codes."""
     cols = [*CSV_COLUMNS, *CSV_DERIVED]
     cols += [f"torque_{c}_Nm" for c in CONTACTS_WITH_CAGE] + [f"torque_{k}_Nm" for k in MECHANISMS]
+    band = any("uncertainty" in p for p in points)
+    if band:
+        cols += list(CSV_UNCERTAINTY)
     buf = io.StringIO()
     w = csv.writer(buf)
     w.writerow(cols)
     for p in points:
-        w.writerow(_csv_row(p))
+        row = _csv_row(p)
+        if band:
+            u = p.get("uncertainty") or {}
+            row += ["" if u.get(k) is None else u[k] for k in CSV_UNCERTAINTY]
+        w.writerow(row)
     return buf.getvalue()
 
 
