@@ -264,7 +264,8 @@ def settling(t: np.ndarray, Q: np.ndarray, g: BearingGeometry, final_speed_rad_s
     axial load) the signals do not vary with the pass, and shorter windows judge them in a
     shorter run: the windows P / 4, P / 2 and P are tried in turn, and the first that finds the
     signals settled decides. (A pass's variation fails the shorter windows' spread test, so it
-    never passes as steady; a slow creep fails the trend test at any window.) The test must
+    never passes as steady; a creep fails the trend test, which is judged over four passes
+    whatever the window.) The test must
     pass over :data:`STEADY_HOLD_PASSES` windows, so the settled part is at least four windows
     long. Windows are at least two output intervals; a sixteenth of the run when the profile
     ends at standstill. The torques are judged against the larger of the two torques' levels
@@ -295,6 +296,7 @@ def settling(t: np.ndarray, Q: np.ndarray, g: BearingGeometry, final_speed_rad_s
         floors = {"drive_torque_Nm": torque_floor, "outer_ring_torque_Nm": torque_floor,
                   "cage_speed_rad_s": max(0.01 * abs(final_speed_rad_s), 1e-9)}
         result = settled_window(t, integrals, window, tol, floors=floors, hold=STEADY_HOLD_PASSES * window,
+                                trend_span=(2.0 + STEADY_HOLD_PASSES) * max(one_pass, 2.0 * output_interval_s),
                                 time_unit=("ms", 1e3))
         if result.settled:
             break

@@ -225,7 +225,8 @@ def window_trend(t: np.ndarray, integral: np.ndarray, start: float, end: float, 
 
 def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: float, tol: float, *,
                    floors: dict[str, float] | None = None, hold: float | None = None,
-                   step: float | None = None, time_unit: tuple[str, float] = ("", 1.0)) -> SettledWindow:
+                   step: float | None = None, trend_span: float | None = None,
+                   time_unit: tuple[str, float] = ("", 1.0)) -> SettledWindow:
     """The part at the end of a run over which every signal has settled.
 
     Drift and spread on consecutive window means:
@@ -240,8 +241,9 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
        other and with the extrapolated level, its first window may still hold the end of a
        transient (a step in the signal passes the test once it lies in that window).
     2. Over that part, the straight line through every signal's window means must change by at
-       most ``tol`` of its scale (:func:`window_trend`: a creep too slow for three windows to
-       see); where it does not, the part starts later, a step at a time.
+       most ``tol`` of its scale over the part or over ``trend_span``, whichever is longer
+       (:func:`window_trend`: a creep too slow for three windows to see, such as a slow speed
+       ramp, is still a drift); where it does not, the part starts later, a step at a time.
 
     The signals are settled when the check at the end passes and the run of passes lasts at
     least ``hold`` (default: two windows): a settled part is at least two windows and ``hold``
@@ -262,6 +264,9 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
         Relative tolerance (> 0).
     floors
         Per signal, the smallest scale (a signal settling at zero is judged against it).
+    trend_span
+        The time over which a trend may change a signal by at most ``tol`` (default: the
+        shortest settled part, two windows and ``hold``).
     time_unit
         (name, factor) of the times in ``reason``: ("ms", 1e3) for times in seconds shown in ms.
     """
@@ -278,6 +283,7 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
     def ft(x: float) -> str:
         return f"{x * factor:.4g}{' ' + unit if unit else ''}"
     need = max(3 * window, 2 * window + hold)
+    trend_span = need if trend_span is None else float(trend_span)
 
     def test_at(tc: float) -> tuple[bool, dict[str, SteadyDrift], dict[str, float]]:
         edges = tc - window * np.arange(3, -1, -1)
@@ -318,18 +324,20 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
                       f"(tolerance {tol:.2%} of {sc:.4g})", drifts, scales)
     start = max(t0, since - 2 * window)
     while True:  # the creep across the part, a step later at a time
-        trends = {n: abs(window_trend(t, I, start, t_end, window)) / scales[n] for n, I in integrals.items()}
+        span = max(t_end - start, trend_span)
+        trends = {n: abs(window_trend(t, I, start, t_end, window)) / (t_end - start) * span / scales[n]
+                  for n, I in integrals.items()}
         worst = max(trends, key=trends.get)
         if trends[worst] <= tol or t_end - start - step < need - eps:
             break
         start += step
     if trends[worst] > tol:
-        return result(False, start, f"{worst} creeps by {trends[worst]:.2%} across the last {ft(t_end - start)} "
-                      f"(tolerance {tol:.2%}): not settled", drifts, scales, trends)
+        return result(False, start, f"{worst} creeps by {trends[worst]:.2%} over {ft(span)} (its trend across "
+                      f"{ft(start)}-{ft(t_end)}; tolerance {tol:.2%}): not settled", drifts, scales, trends)
     if t_end - start < need - eps:
         return result(False, start, f"steady only from {ft(start)} to {ft(t_end)} ({ft(t_end - start)}); the "
                       f"test needs {ft(need)} (two windows of {ft(window)} and a hold of {ft(hold)})",
                       drifts, scales, trends)
     return result(True, start, f"every signal within {tol:.2%} over three windows of {ft(window)} at every check "
                   f"point from {ft(start + 2 * window)} to {ft(t_end)}, and its trend across "
-                  f"{ft(start)}-{ft(t_end)} within it", drifts, scales, trends)
+                  f"{ft(start)}-{ft(t_end)} within it over {ft(span)}", drifts, scales, trends)
