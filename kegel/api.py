@@ -11,8 +11,12 @@
 :class:`Bearing` names the bearing, lubricant, material and model fidelity;
 :meth:`Bearing.friction` solves operating points and returns a :class:`FrictionResult`. Every
 quantity is a string with its unit (``"6 kN"``, ``"2000 rpm"``, ``"50 degC"``, read by
-:func:`kegel.units.parse_quantity`) or a float in SI units (N, rad/s, K, m); a list of them sweeps
-that quantity (several lists: every combination, speed varying fastest).
+:func:`kegel.units.parse_quantity`, whose grammar refuses ``"6 500 N"`` or ``"6,5 kN"``) or a pint
+quantity. A bare number is refused unless the keyword names its unit: ``speed_rpm=2000``,
+``speed_rad_s=209.4``, ``temperature_degC=50``, ``temperature_K=323.15``, ``axial_load_N=6000``,
+``axial_load_kN=6``, ``radial_load_N``, ``radial_load_kN``, ``axial_offset_m``,
+``axial_offset_um`` (``speed=200`` was read as 200 rad/s, 1910 rpm). A list of values sweeps that
+quantity (several lists: every combination, speed varying fastest).
 
 The facade is a thin layer over the scene machinery: it writes the scene dictionary a scene file
 would hold (:mod:`kegel.scene`), validates it with :func:`kegel.scene.scene_from_dict` and solves
@@ -69,6 +73,25 @@ _QUANTITIES = {
     "radial_load": "force",
     "temperature": "temperature",
 }
+#: Keywords whose name carries the unit of their bare numbers: keyword -> (quantity, unit).
+UNIT_KEYWORDS: dict[str, tuple[str, str]] = {
+    "speed_rpm": ("speed", "rpm"),
+    "speed_rad_s": ("speed", "rad/s"),
+    "temperature_degC": ("temperature", "degC"),
+    "temperature_K": ("temperature", "K"),
+    "axial_load_N": ("axial_load", "N"),
+    "axial_load_kN": ("axial_load", "kN"),
+    "radial_load_N": ("radial_load", "N"),
+    "radial_load_kN": ("radial_load", "kN"),
+    "axial_offset_m": ("axial_offset", "m"),
+    "axial_offset_um": ("axial_offset", "um"),
+}
+_UNIT_KEYWORD_EXAMPLES = {"speed_rpm": "2000", "speed_rad_s": "209.4", "temperature_degC": "50",
+                          "temperature_K": "323.15", "axial_load_N": "6000", "axial_load_kN": "6",
+                          "radial_load_N": "2000", "radial_load_kN": "2", "axial_offset_m": "2e-05",
+                          "axial_offset_um": "20"}
+#: Values of the operating quantities no keyword gives.
+_DEFAULTS = {"temperature": "50 degC", "radial_load": "0 kN"}
 _OIL_LEVEL_WORDS = ("flooded", "shaft_center", "half_roller")
 _HYDRAULIC = ("none", "liebrecht", "skf")
 #: scene keys -> the argument of the facade that sets them (for the error messages)
@@ -148,9 +171,12 @@ class Bearing:
         return (f"Bearing({self.designation!r}, lubricant={self.lubricant.name!r}, material={self.material.name!r}, "
                 f"fidelity={self.fidelity!r})")
 
-    def scene(self, speed: Any, axial_load: Any = None, *, temperature: Any = "50 degC", radial_load: Any = "0 kN",
-              axial_offset: Any = None, lubrication: str | float = "minimum_quantity",
-              hydraulic: str | None = None) -> dict[str, Any]:
+    def scene(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None, radial_load: Any = None,
+              axial_offset: Any = None, lubrication: Any = "minimum_quantity", hydraulic: str | None = None,
+              speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
+              temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
+              radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
+              axial_offset_um: Any = None) -> dict[str, Any]:
         """The scene dictionary (the content of a scene file, see :mod:`kegel.scene`) that
         :meth:`friction` solves; the arguments are those of :meth:`friction`.
 
@@ -162,18 +188,8 @@ class Bearing:
         KegelInputError
             An argument that is not what it should be; the message names it.
         """
-        operating: dict[str, Any] = {"speed": _quantity_text(speed, "speed")}
-        if (axial_load is None) == (axial_offset is None):
-            raise KegelInputError(_SOURCE_FRICTION, "axial_load", axial_load,
-                                  "exactly one of axial_load (force-controlled, e.g. '6 kN') and axial_offset "
-                                  "(displacement-controlled preload, e.g. '20 um')")
-        if axial_load is not None:
-            operating["axial_load"] = _quantity_text(axial_load, "axial_load")
-        else:
-            operating["axial_offset"] = _quantity_text(axial_offset, "axial_offset")
-        operating["radial_load"] = _quantity_text(radial_load, "radial_load")
-        operating["temperature"] = _quantity_text(temperature, "temperature")
-
+        given = {k: v for k, v in locals().items() if k in _QUANTITIES or k in UNIT_KEYWORDS}
+        operating = _operating_table(given)
         lub_table = _lubrication_table(lubrication)
         model: dict[str, Any] = {"fidelity": self.fidelity}
         method = _hydraulic_method(hydraulic, lub_table)
@@ -188,29 +204,36 @@ class Bearing:
             "model": model,
         }
 
-    def friction(self, speed: Any, axial_load: Any = None, *, temperature: Any = "50 degC",
-                 radial_load: Any = "0 kN", axial_offset: Any = None, lubrication: str | float = "minimum_quantity",
-                 hydraulic: str | None = None) -> "FrictionResult":
+    def friction(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None,
+                 radial_load: Any = None, axial_offset: Any = None, lubrication: Any = "minimum_quantity",
+                 hydraulic: str | None = None, speed_rpm: Any = None, speed_rad_s: Any = None,
+                 temperature_degC: Any = None, temperature_K: Any = None, axial_load_N: Any = None,
+                 axial_load_kN: Any = None, radial_load_N: Any = None, radial_load_kN: Any = None,
+                 axial_offset_m: Any = None, axial_offset_um: Any = None) -> "FrictionResult":
         """Friction torque (and hydraulic loss) at one operating point or a sweep.
+
+        Every quantity is given once: as a string with its unit (``speed="2000 rpm"``, grammar
+        of :mod:`kegel.units`) or a pint quantity, or as a number in the keyword that names its
+        unit (``speed_rpm=2000``). A bare number in a keyword without a unit is refused.
 
         Parameters
         ----------
-        speed
-            Inner-ring speed (outer ring fixed), e.g. ``"2000 rpm"``; a float is rad/s.
-        axial_load
-            Axial load (force-controlled), e.g. ``"6 kN"``; a float is N. Exactly one of
-            ``axial_load`` and ``axial_offset`` is given.
-        temperature
-            Oil and bearing temperature, e.g. ``"50 degC"``; a float is K.
-        radial_load
-            Radial load, e.g. ``"2 kN"``; a float is N.
-        axial_offset
+        speed, speed_rpm, speed_rad_s
+            Inner-ring speed (outer ring fixed), e.g. ``"2000 rpm"``; required.
+        axial_load, axial_load_N, axial_load_kN
+            Axial load (force-controlled), e.g. ``"6 kN"``. Exactly one of the axial load and
+            the axial offset is given.
+        temperature, temperature_degC, temperature_K
+            Oil and bearing temperature, e.g. ``"50 degC"`` (the default).
+        radial_load, radial_load_N, radial_load_kN
+            Radial load, e.g. ``"2 kN"`` (default 0).
+        axial_offset, axial_offset_m, axial_offset_um
             Axial offset of the inner ring towards the apex (displacement-controlled preload),
-            e.g. ``"20 um"``; a float is m.
+            e.g. ``"20 um"``.
         lubrication
             ``"minimum_quantity"`` (no oil bath) or the oil level of an oil bath: ``"flooded"``,
             ``"shaft_center"``, ``"half_roller"`` or a height above the lowest point of the
-            outer diameter (``"40 mm"``; a float is m).
+            outer diameter with its unit (``"40 mm"``, or a pint quantity).
         hydraulic
             Hydraulic loss of the oil bath: ``None`` (Liebrecht for an oil bath, none for minimum
             quantity), ``"liebrecht"``, ``"skf"`` (SKF catalogue drag moment) or ``"none"``.
@@ -225,18 +248,21 @@ class Bearing:
         Raises
         ------
         KegelInputError
-            A bad argument (wrong unit, out of range, unknown word); the message names it.
+            A bad argument (wrong unit, bare number, out of range, unknown word); the message
+            names it.
         """
         from .run import run_scene
         from .scene import scene_from_dict
 
-        raw = self.scene(speed, axial_load, temperature=temperature, radial_load=radial_load,
-                         axial_offset=axial_offset, lubrication=lubrication, hydraulic=hydraulic)
+        args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "scene_from_dict")}
+        raw = self.scene(**args)
+        used = {q: next((k for k in (q, *(u for u, (uq, _) in UNIT_KEYWORDS.items() if uq == q))
+                         if args.get(k) is not None), q) for q in _QUANTITIES}
         method = _hydraulic_method(hydraulic, raw["lubrication"])
         try:
             scene = scene_from_dict(raw, source=_SOURCE_FRICTION)
         except KegelInputError as exc:
-            raise _as_argument_error(exc) from None
+            raise _as_argument_error(exc, used) from None
         run = run_scene(scene, write=False, progress=False)
         points = run.points
         if method == "skf":
@@ -427,49 +453,132 @@ def _name_argument(value: Any, name: str, expected: str) -> str:
     return str(value)
 
 
-def _quantity_text(value: Any, name: str) -> str | list[str]:
-    """An operating quantity as the scene writes it: the string as given (checked here, so the
-    error names the argument) or an SI float with its SI unit; a list for a sweep."""
+def _operating_table(given: dict[str, Any]) -> dict[str, Any]:
+    """The ``[operating]`` table of the scene from the quantity arguments (``given``: every
+    quantity keyword and unit-named keyword with its value, None when not given)."""
+    values: dict[str, Any] = {}
+    for name in _QUANTITIES:
+        keys = [name, *(k for k, (q, _) in UNIT_KEYWORDS.items() if q == name)]
+        present = [k for k in keys if given.get(k) is not None]
+        if len(present) > 1:
+            raise KegelInputError(_SOURCE_FRICTION, present[1], given[present[1]],
+                                  f"one of {', '.join(keys)}, not both {present[0]} and {present[1]}")
+        if not present:
+            if name in _DEFAULTS:
+                values[name] = _DEFAULTS[name]
+            continue
+        key = present[0]
+        if key == name:
+            values[name] = _quantity_text(given[key], name)
+        else:
+            values[name] = _unit_keyword_text(given[key], key)
+    if "speed" not in values:
+        raise KegelInputError(_SOURCE_FRICTION, "speed", None,
+                              "a speed: speed='2000 rpm' (a string with its unit or a pint quantity), "
+                              "speed_rpm=2000 or speed_rad_s=209.4")
+    if ("axial_load" in values) == ("axial_offset" in values):
+        key = next((k for k in ("axial_load", "axial_load_N", "axial_load_kN") if given.get(k) is not None),
+                   "axial_load")
+        raise KegelInputError(_SOURCE_FRICTION, key, given.get(key),
+                              "exactly one of axial_load (force-controlled, e.g. '6 kN' or axial_load_kN=6) and "
+                              "axial_offset (displacement-controlled preload, e.g. '20 um' or axial_offset_um=20)")
+    order = ("speed", "axial_load", "axial_offset", "radial_load", "temperature")
+    return {k: values[k] for k in order if k in values}
+
+
+def _items(value: Any, name: str) -> list[Any] | None:
+    """The values of a sweep (a list, tuple or 1-D array), or None for a single value."""
     if isinstance(value, (list, tuple, np.ndarray)):
         items = np.asarray(value, dtype=object).ravel().tolist() if isinstance(value, np.ndarray) else list(value)
         if not items:
             raise KegelInputError(_SOURCE_FRICTION, name, value, "a sweep with at least one value")
+        return items
+    return None
+
+
+def _quantity_text(value: Any, name: str) -> str | list[str]:
+    """An operating quantity as the scene writes it: the string as given (checked here by the
+    grammar of :mod:`kegel.units`, so the error names the argument), or a pint quantity as its SI
+    value with the SI unit; a list for a sweep."""
+    items = _items(value, name)
+    if items is not None:
         return [_one_quantity(v, f"{name}[{i}]", name) for i, v in enumerate(items)]
     return _one_quantity(value, name, name)
 
 
 def _one_quantity(value: Any, key: str, name: str) -> str:
     kind = KINDS[_QUANTITIES[name]]
-    if hasattr(value, "magnitude") and hasattr(value, "units") and np.ndim(value.magnitude) == 0:
-        value = str(value)  # a pint quantity (any registry): "6 kilonewton"
     if isinstance(value, str):
         parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
         return value
+    if _is_pint_quantity(value):
+        si = parse_quantity(_as_ureg_quantity(value, key), _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
+        return f"{si!r} {kind.si_unit}"
+    unit_keys = " or ".join(f"{k}=" for k, (q, _) in UNIT_KEYWORDS.items() if q == name)
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        v = float(value)
-        if not math.isfinite(v):
-            raise KegelInputError(_SOURCE_FRICTION, key, value, f"a finite {kind.description[2:]}")
-        return f"{v!r} {kind.si_unit}"
+        raise KegelInputError(_SOURCE_FRICTION, key, value,
+                              f"{kind.description} with its unit, e.g. {name}='{kind.example}' (or a pint quantity); "
+                              f"a bare number only in a keyword that names its unit: {unit_keys}")
     raise KegelInputError(_SOURCE_FRICTION, key, value,
-                          f"{kind.description} with its unit, e.g. '{kind.example}', a float in {kind.si_unit}, "
-                          "or a list of them (a sweep)")
+                          f"{kind.description} with its unit, e.g. '{kind.example}', a pint quantity, or a list of "
+                          f"them (a sweep); numbers in {unit_keys}")
+
+
+def _unit_keyword_text(value: Any, keyword: str) -> str | list[str]:
+    """A number (or a list of them) of a keyword that names its unit, as the scene's text."""
+    items = _items(value, keyword)
+    if items is not None:
+        return [_unit_number_text(v, f"{keyword}[{i}]", keyword) for i, v in enumerate(items)]
+    return _unit_number_text(value, keyword, keyword)
+
+
+def _unit_number_text(value: Any, key: str, keyword: str) -> str:
+    name, unit = UNIT_KEYWORDS[keyword]
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or _is_pint_quantity(value):
+        raise KegelInputError(_SOURCE_FRICTION, key, value,
+                              f"a number in {unit} (the keyword names the unit), e.g. {keyword}={_UNIT_KEYWORD_EXAMPLES[keyword]}; a string with "
+                              f"its unit or a pint quantity goes to {name}=")
+    v = float(value)
+    if not math.isfinite(v):
+        raise KegelInputError(_SOURCE_FRICTION, key, value, f"a finite number in {unit}")
+    return f"{v!r} {unit}"
+
+
+def _is_pint_quantity(value: Any) -> bool:
+    """A pint quantity of any registry (its class differs between registries)."""
+    return hasattr(value, "magnitude") and hasattr(value, "units") and hasattr(value, "dimensionality")
+
+
+def _as_ureg_quantity(value: Any, key: str) -> Any:
+    """A scalar pint quantity of any registry (:func:`kegel.units.parse_quantity` converts it)."""
+    if np.ndim(value.magnitude) != 0:
+        raise KegelInputError(_SOURCE_FRICTION, key, str(value),
+                              "one value per pint quantity (a sweep: a list of quantities)")
+    import pint
+
+    if isinstance(value, pint.Quantity):
+        return value
+    return pint.Quantity(float(value.magnitude), str(value.units))
 
 
 def _lubrication_table(lubrication: Any) -> dict[str, Any]:
     expected = ("'minimum_quantity' or the oil level of an oil bath: 'flooded', 'shaft_center', 'half_roller' or a "
-                "height above the lowest point of the outer diameter, e.g. '40 mm' (a float: m)")
-    if lubrication in ("minimum_quantity", "none"):
+                "height above the lowest point of the outer diameter with its unit, e.g. '40 mm' (or a pint quantity)")
+    if isinstance(lubrication, str) and lubrication in ("minimum_quantity", "none"):
         return {"mode": "minimum_quantity"}
-    if lubrication in _OIL_LEVEL_WORDS:
+    if isinstance(lubrication, str) and lubrication in _OIL_LEVEL_WORDS:
         return {"mode": "oil_bath", "oil_level": lubrication}
     if isinstance(lubrication, str):
         try:
             parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
-        except KegelInputError:
-            raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected) from None
+        except KegelInputError as exc:
+            raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication,
+                                  f"{expected}; here {exc.expected}") from None
         return {"mode": "oil_bath", "oil_level": lubrication}
-    if isinstance(lubrication, numbers.Real) and not isinstance(lubrication, bool) and math.isfinite(lubrication):
-        return {"mode": "oil_bath", "oil_level": f"{float(lubrication)!r} m"}
+    if _is_pint_quantity(lubrication):
+        level = parse_quantity(_as_ureg_quantity(lubrication, "lubrication"), "length", source=_SOURCE_FRICTION,
+                               key="lubrication")
+        return {"mode": "oil_bath", "oil_level": f"{level!r} m"}
     raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected)
 
 
@@ -488,11 +597,14 @@ def _hydraulic_method(hydraulic: Any, lub_table: dict[str, Any]) -> str:
     return hydraulic
 
 
-def _as_argument_error(exc: KegelInputError) -> KegelInputError:
-    """A scene's error (``operating.axial_load[1]``) as the facade's (``axial_load[1]``)."""
+def _as_argument_error(exc: KegelInputError, used: dict[str, str] | None = None) -> KegelInputError:
+    """A scene's error (``operating.axial_load[1]``) as the facade's (``axial_load[1]``, or
+    ``axial_load_kN[1]`` when that keyword gave the value: ``used`` maps quantity -> keyword)."""
     key = exc.key
     if key.startswith("operating."):
         key = key[len("operating."):]
+        name, sep, rest = key.partition("[")
+        key = (used or {}).get(name, name) + sep + rest
     elif key.startswith("lubrication"):
         key = "lubrication"
     else:

@@ -133,6 +133,10 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
             f"Fa / Fr > tan(alpha_o) = {math.tan(g.cup_angle_rad):.3f} for a single tapered roller bearing "
             f"(here {axial_N / radial_N:.3f}: the inner ring would lift off); use a displacement-controlled "
             f"axial offset for such load cases")
+    from .scene import check_operating_point  # the scenes' ranges of the loads (C0r included)
+
+    check_operating_point(bearing, g, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
+                          tilt_moment_Nm=tilt_moment_Nm if tilt_free else 0.0, misalignment_rad=misalignment_rad)
     t0 = time.perf_counter()
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     data = data or Q.BearingData(model)
@@ -275,10 +279,25 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     drive against outer-ring torque, sign, ring equilibrium) before it is called converged. A
     warm-started solution (``data`` passed in) that fails them is solved again from a fresh state;
     one that still fails is returned with ``converged = False`` and the residuals in ``failure``.
+
+    Raises
+    ------
+    KegelInputError
+        A value outside the scenes' ranges (:func:`kegel.scene.check_operating_point`: the
+        lubricant's temperature range, the speed limit n d_m, the loads, C0r, the misalignment,
+        the tilt moment), naming the argument.
     """
     if tilt_moment_Nm != 0.0 and misalignment_rad != 0.0:
         raise KegelInputError("<argument>", "tilt_moment_Nm", tilt_moment_Nm,
                               "either a tilt moment (the ring tilts freely) or a misalignment (its tilt imposed), not both")
+    # the ranges of a scene's operating point (temperature of the lubricant data, speed limit
+    # n d_m, loads, C0r): a public function that takes SI floats checks what a scene checks
+    from .scene import check_operating_point
+
+    check_operating_point(bearing, g, lubricant=lubricant, temperature_K=temperature_K,
+                          speed_rad_s=inner_speed_rad_s, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                          radial_N=radial_N, tilt_moment_Nm=tilt_moment_Nm, misalignment_rad=misalignment_rad,
+                          names={"speed": "inner_speed_rad_s"})
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     warm = data is not None
     data = data or Q.BearingData(model)

@@ -108,7 +108,9 @@ __all__ = [
     "OperatingPoint",
     "Scene",
     "apply_overrides",
+    "check_operating_point",
     "check_speed",
+    "operating_range_error",
     "static_equivalent_load_N",
     "load_scene",
     "resolve_oil_level",
@@ -125,6 +127,8 @@ MAX_OPERATING_POINTS = 100_000
 MAX_DYNAMIC_DURATION_S = 10.0
 MIN_OUTPUT_INTERVAL_S = 1e-6
 MAX_DYNAMIC_OUTPUTS = 200_000
+#: Largest |misalignment| of the inner ring [rad].
+MAX_MISALIGNMENT_RAD = 0.01
 #: Largest contact / hydraulic boundary g (``model.contact_film_limit``): a film height beyond
 #: 10 mm is no longer near a line contact of any bearing kegel models.
 MAX_CONTACT_FILM_LIMIT_M = 0.01
@@ -815,13 +819,6 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
             values[key] = reader.sweep(op[key], kind, f"operating.{key}")
     values.setdefault("radial_load", [0.0])
 
-    def check_each(key: str, ok: Any, expected: str, shown: Any) -> None:
-        raw = op[key]
-        for i, v in enumerate(values[key]):
-            if not ok(v):
-                where = f"operating.{key}" if isinstance(raw, str) else f"operating.{key}[{i}]"
-                raise reader.error(where, shown(v, raw, i), expected)
-
     def as_written(v: float, raw: Any, i: int) -> Any:
         if isinstance(raw, str):
             return raw
@@ -829,37 +826,26 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
             return raw[i]
         return v
 
-    if "axial_load" in values:
-        check_each("axial_load", lambda v: v > 0.0, "a positive axial load (> 0 N); a tapered roller "
-                   "bearing needs axial load to keep its rollers seated", as_written)
-    if "axial_offset" in values:
-        check_each("axial_offset", lambda v: v > 0.0, "a positive axial offset (> 0 m, preload)", as_written)
-    if "radial_load" in op:
-        check_each("radial_load", lambda v: v >= 0.0, "a radial load >= 0 N", as_written)
-    n_max_rpm = max_speed_rpm(bearing)
-    check_each("speed", lambda v: 0.0 < abs(v) / RPM_TO_RAD_S <= n_max_rpm,
-               f"a non-zero speed with {_speed_limit_text(bearing)}", as_written)
-    lo, hi = TEMPERATURE_RANGE_DEGC
-    check_each("temperature", lambda v: lo <= v - 273.15 <= hi,
-               f"a temperature in [{lo:g}, {hi:g}] degC", as_written)
+    for key in ("axial_load", "axial_offset", "radial_load", "speed", "temperature"):
+        if key not in op:
+            continue
+        raw = op[key]
+        for i, v in enumerate(values[key]):
+            expected = operating_range_error(key, v, bearing)
+            if expected is not None:
+                where = f"operating.{key}" if isinstance(raw, str) else f"operating.{key}[{i}]"
+                raise reader.error(where, as_written(v, raw, i), expected)
 
     tilt = reader.quantity(op["tilt_moment"], "moment", "operating.tilt_moment") if "tilt_moment" in op else 0.0
     mis = reader.quantity(op["misalignment"], "angle", "operating.misalignment") if "misalignment" in op else 0.0
-    if abs(mis) > 0.01:
-        raise reader.error("operating.misalignment", op["misalignment"], "|misalignment| <= 10 mrad")
-    if tilt != 0.0 and "axial_load" in values:
-        # a single TRB holds a tilt moment through its axial load: beyond Fa d_m / 2 every roller
-        # on one side would have to carry the whole axial load at the pitch radius (tipping)
-        fa_min = min(values["axial_load"])
-        limit = fa_min * 0.5 * bearing.pitch_diameter_m
-        if abs(tilt) >= limit:
-            raise reader.error("operating.tilt_moment", op["tilt_moment"],
-                               f"|tilt moment| < Fa d_m / 2 = {limit:.4g} N m (smallest axial load {fa_min:.4g} N, "
-                               f"d_m = {bearing.pitch_diameter_m * 1e3:.4g} mm): beyond it the inner ring tips over")
-    if tilt != 0.0 and mis != 0.0:
-        raise reader.error("operating.tilt_moment", op["tilt_moment"],
-                           "either a tilt moment (the inner ring tilts freely under it) or a misalignment (its tilt "
-                           "imposed), not both")
+    expected = operating_range_error("misalignment", mis, bearing)
+    if expected is not None:
+        raise reader.error("operating.misalignment", op["misalignment"], expected)
+    if tilt != 0.0:
+        expected = _tilt_moment_error(tilt, min(values["axial_load"]) if "axial_load" in values else None, mis,
+                                      bearing)
+        if expected is not None:
+            raise reader.error("operating.tilt_moment", op["tilt_moment"], expected)
 
     axial_key = "axial_load" if "axial_load" in values else "axial_offset"
     order = ("temperature", axial_key, "radial_load", "speed")  # speed varies fastest
@@ -888,6 +874,141 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
     return points, swept
 
 
+def operating_range_error(quantity: str, value: float, bearing: BearingData) -> str | None:
+    """The range of one operating quantity, as every entry point checks it (scene files,
+    ``--set``, the Python API, and the public functions that take SI floats).
+
+    Parameters
+    ----------
+    quantity
+        ``"axial_load"`` [N], ``"axial_offset"`` [m], ``"radial_load"`` [N], ``"speed"`` [rad/s],
+        ``"temperature"`` [K] or ``"misalignment"`` [rad].
+    value
+        The value in SI units.
+    bearing
+        The bearing (the speed limit n d_m depends on its pitch diameter).
+
+    Returns
+    -------
+    str or None
+        None when ``value`` is inside the range, else what was expected, in words (the scenes'
+        message).
+    """
+    v = float(value)
+    if not math.isfinite(v):
+        return "a finite number"
+    if quantity == "axial_load":
+        return None if v > 0.0 else ("a positive axial load (> 0 N); a tapered roller bearing needs axial load to "
+                                     "keep its rollers seated")
+    if quantity == "axial_offset":
+        return None if v > 0.0 else "a positive axial offset (> 0 m, preload)"
+    if quantity == "radial_load":
+        return None if v >= 0.0 else "a radial load >= 0 N"
+    if quantity == "speed":
+        return None if 0.0 < abs(v) / RPM_TO_RAD_S <= max_speed_rpm(bearing) else (
+            f"a non-zero speed with {_speed_limit_text(bearing)}")
+    if quantity == "temperature":
+        lo, hi = TEMPERATURE_RANGE_DEGC
+        return None if lo <= v - 273.15 <= hi else f"a temperature in [{lo:g}, {hi:g}] degC"
+    if quantity == "misalignment":
+        return None if abs(v) <= MAX_MISALIGNMENT_RAD else f"|misalignment| <= {MAX_MISALIGNMENT_RAD * 1e3:g} mrad"
+    raise ValueError(f"unknown operating quantity {quantity!r}")
+
+
+def _tilt_moment_error(tilt_Nm: float, axial_min_N: float | None, misalignment_rad: float,
+                       bearing: BearingData) -> str | None:
+    """The tilt moment's limits: finite, below Fa d_m / 2 (a single TRB holds a tilt moment
+    through its axial load: beyond it every roller on one side would have to carry the whole axial
+    load at the pitch radius, tipping), and not together with a misalignment."""
+    if not math.isfinite(tilt_Nm):
+        return "a finite tilt moment"
+    if tilt_Nm != 0.0 and axial_min_N is not None:
+        limit = axial_min_N * 0.5 * bearing.pitch_diameter_m
+        if abs(tilt_Nm) >= limit:
+            return (f"|tilt moment| < Fa d_m / 2 = {limit:.4g} N m (smallest axial load {axial_min_N:.4g} N, "
+                    f"d_m = {bearing.pitch_diameter_m * 1e3:.4g} mm): beyond it the inner ring tips over")
+    if tilt_Nm != 0.0 and misalignment_rad != 0.0:
+        return ("either a tilt moment (the inner ring tilts freely under it) or a misalignment (its tilt imposed), "
+                "not both")
+    return None
+
+
+def check_operating_point(bearing: BearingData, g: BearingGeometry, *, lubricant: LubricantData | None = None,
+                          temperature_K: float | None = None, speed_rad_s: float | None = None,
+                          axial_N: float | None = None, axial_offset_m: float | None = None,
+                          radial_N: float = 0.0, tilt_moment_Nm: float = 0.0, misalignment_rad: float = 0.0,
+                          names: dict[str, str] | None = None, source: str = "<argument>") -> None:
+    """The scenes' checks of one operating point given as SI floats, for the public functions
+    that take them (:func:`kegel.quasi_static.bearing_friction`, ...): every range of
+    :func:`operating_range_error`, the lubricant's temperature range and formulas (with
+    ``lubricant``), the tilt moment's limits and, for a force-controlled point, the lift-off of a
+    single tapered roller bearing and the static load rating C0r (ISO 76).
+
+    ``None`` skips ``temperature_K`` and ``speed_rad_s``. ``names`` maps the quantities
+    (``temperature``, ``speed``, ``axial_load``, ``axial_offset``, ``radial_load``,
+    ``tilt_moment``, ``misalignment``) to the caller's argument names for the message (default:
+    ``temperature_K``, ``speed_rad_s``, ``axial_N``, ``axial_offset_m``, ``radial_N``,
+    ``tilt_moment_Nm``, ``misalignment_rad``).
+
+    Raises
+    ------
+    KegelInputError
+        Naming ``source``, the argument and its value, with the scenes' message.
+    """
+    names = {"temperature": "temperature_K", "speed": "speed_rad_s", "axial_load": "axial_N",
+             "axial_offset": "axial_offset_m", "radial_load": "radial_N", "tilt_moment": "tilt_moment_Nm",
+             "misalignment": "misalignment_rad", **(names or {})}
+
+    def real(quantity: str, value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+            raise KegelInputError(source, names[quantity], value, "a number in SI units")
+        return float(value)
+
+    values = {"temperature": temperature_K, "speed": speed_rad_s, "axial_load": axial_N,
+              "axial_offset": axial_offset_m, "radial_load": radial_N, "misalignment": misalignment_rad}
+    for quantity, value in values.items():
+        if value is None:
+            continue
+        expected = operating_range_error(quantity, real(quantity, value), bearing)
+        if expected is not None:
+            if quantity == "temperature" and math.isfinite(value):
+                expected += f" (here {value - 273.15:g} degC)"
+            raise KegelInputError(source, names[quantity], value, expected)
+    if temperature_K is not None and lubricant is not None:
+        lubricant_state(lubricant, float(temperature_K), source=source, key=names["temperature"])
+    expected = _tilt_moment_error(real("tilt_moment", tilt_moment_Nm), axial_N, float(misalignment_rad), bearing)
+    if expected is not None:
+        raise KegelInputError(source, names["tilt_moment"], tilt_moment_Nm, expected)
+    if axial_N is not None:
+        expected = _lift_off_error(g, float(axial_N), float(radial_N)) or _static_load_error(
+            g, bearing, float(axial_N), float(radial_N))
+        if expected is not None:
+            key = names["axial_load"] if _iso76_y0(g) * axial_N >= 0.5 * radial_N else names["radial_load"]
+            raise KegelInputError(source, key, axial_N if key == names["axial_load"] else radial_N, expected)
+
+
+def _lift_off_error(g: BearingGeometry, axial_N: float, radial_N: float) -> str | None:
+    """A single TRB under a force-controlled axial load needs Fa / Fr > tan(alpha_o) (one
+    roller carrying everything); below it the inner ring lifts off."""
+    tan_a = math.tan(g.cup_angle_rad)
+    if radial_N > 0 and axial_N / radial_N <= tan_a:
+        return (f"Fa / Fr > tan(alpha_o) = {tan_a:.3f} for a single tapered roller bearing (here Fa = "
+                f"{axial_N / 1e3:.4g} kN, Fr = {radial_N / 1e3:.4g} kN, ratio {axial_N / radial_N:.3f}: the inner ring "
+                "would lift off); use operating.axial_offset (displacement-controlled) for such load cases")
+    return None
+
+
+def _static_load_error(g: BearingGeometry, bearing: BearingData, axial_N: float, radial_N: float) -> str | None:
+    """The ISO 76 static equivalent load within the basic static load rating C0r."""
+    p0 = static_equivalent_load_N(g, axial_N, radial_N)
+    if p0 > bearing.C0r_N:
+        return (f"loads whose ISO 76 static equivalent load P0 stays within C0r = {bearing.C0r_N / 1e3:g} kN of bearing "
+                f"{bearing.designation} (here P0 = {p0 / 1e3:.4g} kN at Fa = {axial_N / 1e3:.4g} kN, Fr = "
+                f"{radial_N / 1e3:.4g} kN: beyond it the raceways deform permanently and the elastic contact models "
+                "do not hold)")
+    return None
+
+
 def static_equivalent_load_N(g: BearingGeometry, axial_N: float, radial_N: float) -> float:
     """ISO 76 static equivalent radial load of a single-row tapered roller bearing:
     P0 = 0.5 Fr + Y0 Fa with Y0 = 0.22 cot(alpha) (alpha: the cup angle), and at least Fr.
@@ -905,33 +1026,22 @@ def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[Opera
     """Loads against the basic static load rating C0r: the contact models are elastic, and a
     static equivalent load above C0r (ISO 76: 4000 MPa at the most loaded roller contact) means
     permanent deformation of the raceways. Displacement-controlled points are checked in the run."""
-    # a single TRB under a force-controlled axial load needs Fa / Fr > tan(alpha_o) (one roller
-    # carrying everything); below it the inner ring lifts off (checked for every point here, not
-    # at the point in the run: kegel check must reject what kegel run would)
-    tan_a = math.tan(g.cup_angle_rad)
-    lift = next((p for p in points if p.axial_load_N is not None and p.radial_load_N > 0
-                 and p.axial_load_N / p.radial_load_N <= tan_a), None)
-    if lift is not None:
-        key = "radial_load" if "radial_load" in op else "axial_load"
-        raise reader.error(f"operating.{key}", op[key],
-                           f"Fa / Fr > tan(alpha_o) = {tan_a:.3f} at every point for a single tapered roller bearing "
-                           f"(point {lift.index}: Fa = {lift.axial_load_N / 1e3:.4g} kN, Fr = "
-                           f"{lift.radial_load_N / 1e3:.4g} kN, ratio {lift.axial_load_N / lift.radial_load_N:.3f}: "
-                           "the inner ring would lift off); use operating.axial_offset (displacement-controlled) "
-                           "for such load cases")
+    # the lift-off of a single TRB (Fa / Fr > tan(alpha_o)) is checked for every point here, not
+    # at the point in the run: kegel check must reject what kegel run would
+    for p in points:
+        expected = None if p.axial_load_N is None else _lift_off_error(g, p.axial_load_N, p.radial_load_N)
+        if expected is not None:
+            key = "radial_load" if "radial_load" in op else "axial_load"
+            raise reader.error(f"operating.{key}", op[key], f"at every point (here point {p.index}): {expected}")
     worst = max((p for p in points if p.axial_load_N is not None),
                 key=lambda p: static_equivalent_load_N(g, p.axial_load_N, p.radial_load_N), default=None)
     if worst is None:
         return
-    p0 = static_equivalent_load_N(g, worst.axial_load_N, worst.radial_load_N)
-    if p0 > bearing.C0r_N:
+    expected = _static_load_error(g, bearing, worst.axial_load_N, worst.radial_load_N)
+    if expected is not None:
         # name the load whose term dominates P0
         key = "axial_load" if _iso76_y0(g) * worst.axial_load_N >= 0.5 * worst.radial_load_N else "radial_load"
-        raise reader.error(f"operating.{key}", op[key],
-                           f"loads whose ISO 76 static equivalent load P0 stays within C0r = {bearing.C0r_N / 1e3:g} kN "
-                           f"of bearing {bearing.designation} (here P0 = {p0 / 1e3:.4g} kN at Fa = "
-                           f"{worst.axial_load_N / 1e3:.4g} kN, Fr = {worst.radial_load_N / 1e3:.4g} kN: beyond it the "
-                           "raceways deform permanently and the elastic contact models do not hold)")
+        raise reader.error(f"operating.{key}", op[key], expected)
 
 
 def _check_dynamic_profiles(reader: "_Reader", table: dict[str, Any], dyn: "DynamicSettings", bearing: BearingData,
@@ -966,9 +1076,9 @@ def check_speed(speed_rad_s: float, bearing: BearingData, *, source: str | Path,
     KegelInputError
         Naming ``source``, ``key`` and the value as written (``text``).
     """
-    if not (math.isfinite(speed_rad_s) and 0.0 < abs(speed_rad_s) / RPM_TO_RAD_S <= max_speed_rpm(bearing)):
-        raise KegelInputError(source, key, text if text is not None else speed_rad_s,
-                              f"a non-zero speed with {_speed_limit_text(bearing)}")
+    expected = operating_range_error("speed", speed_rad_s, bearing)
+    if expected is not None:
+        raise KegelInputError(source, key, text if text is not None else speed_rad_s, expected)
     return speed_rad_s
 
 

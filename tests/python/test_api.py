@@ -85,9 +85,12 @@ def test_facade_equals_the_scene_file(tmp_path, bearing):
 
 
 def test_si_floats_equal_strings_with_units(bearing):
+    """Bare numbers only in the keywords that name their unit (issue 28: speed=200 was rad/s)."""
     a = bearing.friction(speed="2000 rpm", axial_load="6 kN", temperature="50 degC")
-    b = bearing.friction(speed=2000 * RPM_TO_RAD_S, axial_load=6000.0, temperature=323.15)
+    b = bearing.friction(speed_rad_s=2000 * RPM_TO_RAD_S, axial_load_N=6000.0, temperature_K=323.15)
     assert b.speed_rpm == pytest.approx(2000.0, rel=REL)
+    assert b.friction_torque_Nm == pytest.approx(a.friction_torque_Nm, rel=REL)
+    b = bearing.friction(speed_rpm=2000, axial_load_kN=6, temperature_degC=50)
     assert b.friction_torque_Nm == pytest.approx(a.friction_torque_Nm, rel=REL)
     q = kegel.units.ureg.Quantity
     c = bearing.friction(speed=q(2000, "rpm"), axial_load=q(6, "kN"), temperature=q(50, "degC"))
