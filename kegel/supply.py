@@ -24,8 +24,9 @@ bearing by::
 
 (``nu`` [mm^2/s] at the operating temperature, ``n`` [r/min], ``d``, ``D`` [mm]; ``K_Z = 6`` for
 tapered roller bearings) with ``K_rs = 3e-8`` for a low-level oil bath and oil jet lubrication and
-``6e-8`` for grease and oil-air lubrication, for oil levels below the centre of the lowest rolling
-element (a contact under the oil surface is not starved). ``phi_rs`` multiplies SKF's rolling
+``6e-8`` for grease and oil-air lubrication, the oil-bath value for a low-level bath (reprints of
+the model set ``phi_rs = 1`` for a submerged bearing: a contact under the oil surface is not
+starved). ``phi_rs`` multiplies SKF's rolling
 moment, the same quantity as Biboulet-Houpert's ``T / T*``, so each raceway contact gets:
 
 1. its share of the orbit under the oil surface, ``x`` (:func:`immersed_fraction`): a contact
