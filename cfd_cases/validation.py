@@ -1,6 +1,8 @@
 """Validation cases run through the same pipeline as the bearing (gmsh -> gmshToFoam -> solver ->
-forces): laminar Taylor-Couette torque against the analytic solution, and the free surface and
-volume of oil in a turning tank (VOF) against the paraboloid.
+forces): laminar Taylor-Couette torque against the analytic solution, the free surface and
+volume of oil in a turning tank (VOF) against the paraboloid, a cylinder rolling near a wall
+against Wannier's exact creeping flow (how many cells a gap needs), and a rotor-stator cavity
+against Daily & Nece's torque coefficients.
 
 Couette flow between an inner cylinder of radius R1 turning at omega and a resting outer cylinder
 of radius R2 (laminar, below the Taylor instability) has the azimuthal velocity
@@ -28,7 +30,10 @@ from .mesh import check_mesh, gmsh_to_foam, write_msh22
 from .template import render_case, render_file
 
 __all__ = ["CouetteResult", "couette_torque_analytic", "taylor_couette", "RotatingTankResult",
-           "rotating_tank_surface", "rotating_tank"]
+           "rotating_tank_surface", "rotating_tank", "EccentricStokesLoads", "wannier_stream_function",
+           "wannier_vorticity_pressure", "eccentric_stokes_loads", "rolling_gap_lubrication_torque",
+           "RollingGapResult", "ROLLING_GAP_KINEMATICS", "cylinder_rolling_gap", "daily_nece_moment_coefficient",
+           "RotorStatorResult", "rotor_stator"]
 
 
 def couette_torque_analytic(r_inner_m: float, r_outer_m: float, omega_rad_s: float,
