@@ -209,7 +209,8 @@ class Bearing:
                  hydraulic: str | None = None, speed_rpm: Any = None, speed_rad_s: Any = None,
                  temperature_degC: Any = None, temperature_K: Any = None, axial_load_N: Any = None,
                  axial_load_kN: Any = None, radial_load_N: Any = None, radial_load_kN: Any = None,
-                 axial_offset_m: Any = None, axial_offset_um: Any = None) -> "FrictionResult":
+                 axial_offset_m: Any = None, axial_offset_um: Any = None,
+                 uncertainty: Any = False) -> "FrictionResult":
         """Friction torque (and hydraulic loss) at one operating point or a sweep.
 
         Every quantity is given once: as a string with its unit (``speed="2000 rpm"``, grammar
@@ -237,6 +238,11 @@ class Bearing:
         hydraulic
             Hydraulic loss of the oil bath: ``None`` (Liebrecht for an oil bath, none for minimum
             quantity), ``"liebrecht"``, ``"skf"`` (SKF catalogue drag moment) or ``"none"``.
+        uncertainty
+            ``True`` (or a :class:`kegel.uncertainty.UncertaintyOptions`): every point also gets
+            its friction torque band from the crown data (drop -+25 %) and the other slice model,
+            ``points[i]["uncertainty"]`` (three extra solves per point; see
+            :mod:`kegel.uncertainty`). Default ``False``.
 
         Each quantity may be a list (or 1-D array): the result then holds one point per
         combination (speed varying fastest), and its figures are arrays.
@@ -254,7 +260,7 @@ class Bearing:
         from .run import run_scene
         from .scene import scene_from_dict
 
-        args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "scene_from_dict")}
+        args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "scene_from_dict", "uncertainty")}
         raw = self.scene(**args)
         used = {q: next((k for k in (q, *(u for u, (uq, _) in UNIT_KEYWORDS.items() if uq == q))
                          if args.get(k) is not None), q) for q in _QUANTITIES}
@@ -263,7 +269,7 @@ class Bearing:
             scene = scene_from_dict(raw, source=_SOURCE_FRICTION)
         except KegelInputError as exc:
             raise _as_argument_error(exc, used) from None
-        run = run_scene(scene, write=False, progress=False)
+        run = run_scene(scene, write=False, progress=False, uncertainty=uncertainty)
         points = run.points
         if method == "skf":
             points = [_with_skf_drag(scene, p) for p in points]
