@@ -107,3 +107,12 @@ def test_torque_plot_draws_the_band(table1_point):
     ax = next(a for a in figs["torque_plot"].axes if a.get_label() == "torque")
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any("band" in t for t in labels)
+
+
+def test_api_keyword():
+    r = kegel.Bearing("32216").friction(speed="2000 rpm", axial_load="6 kN", temperature="50 degC", uncertainty=True)
+    u = r.points[0]["uncertainty"]
+    assert u["friction_torque_low_Nm"] < r.friction_torque_Nm < u["friction_torque_high_Nm"]
+    assert "uncertainty" not in kegel.Bearing("32216").friction(speed="2000 rpm", axial_load="6 kN").points[0]
+    with pytest.raises(KegelInputError, match="uncertainty"):
+        kegel.Bearing("32216").friction(speed="2000 rpm", axial_load="6 kN", uncertainty="yes")
