@@ -58,7 +58,8 @@ viscosity at 40 degC it is, ISO 3448) and the density at 15 degC.
 
    with ``X = log10(nu0)``, nu0 in mm^2/s and rho in g/cm^3 at the temperature, ``b`` the ASTM
    slope, and alpha in 1e-8 m^2/N (:func:`so_klaus_alpha_per_Pa`). The primary source could not be
-   read through kegel's search tools; the formula is marked ``verify``. Evaluated at 40 and
+   read through kegel's search tools (the textbook form is used; it lands within 4-14 % of FVA 3's
+   measured coefficient at 50-100 degC, tests/python/test_oil_estimate.py). Evaluated at 40 and
    100 degC, it fixes Dicke's ``a1 + a2 theta = 1 / alpha0`` (the seed paper's Eq. 7).
 """
 
