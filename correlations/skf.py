@@ -27,8 +27,9 @@ above, ``R_s = 0.36 d_m^2 (t - sin t) f_A``, ``f_A = 0.05 K_Z (D + d) / (D - d)`
 ``t = 2 acos((0.6 d_m - H) / (0.6 d_m))``, and the drag loss variable ``V_M`` interpolated in
 the table of ``H / d_m`` (:data:`V_M_TABLE`). Tapered roller bearings: ``K_Z = 6``,
 ``K_L = 0.7``, ``mu_bl = 0.15``, ``mu_EHL = 0.002``; series 322: ``R1 = 2.27e-6``,
-``R2 = 10.9``, ``S1 = 0.018``, ``S2 = 2``. ``K_rs = 3e-8`` for an oil bath (low level),
-``6e-8`` for oil-air and oil jet (as the reference file gives them).
+``R2 = 10.9``, ``S1 = 0.018``, ``S2 = 2``. ``K_rs = 3e-8`` for a low-level oil bath and oil jet,
+``6e-8`` for grease and oil-air (as every reprint of the catalogue groups them; the project's
+reference file groups oil jet with oil-air, see below).
 
 Bearing data: ``d`` (bore), ``D`` (outer diameter), ``B`` (the cone width of the catalogue
 table, ``catalogue.cone_width_B_mm``) and ``Y`` (``catalogue.axial_load_factor_Y``) come from
@@ -53,9 +54,10 @@ Values still to be checked (``verify``): the tapered-roller drag constants ``K_Z
 constants ``R1, R2, S1, S2`` were seen only in secondary sources that cite the catalogue, not in
 the catalogue's own tables; the ``V_M`` table is a digitisation of the catalogue's diagram (two
 digitisations agree within 1-5 %; the catalogue's zoomed and full diagrams differ by about 10 %
-between 0.15 and 0.20); the assignment of oil-jet lubrication to ``K_rs = 6e-8`` follows the
-reference file (other readings of the catalogue group oil jet with the low-level oil bath at
-3e-8 and grease with oil-air at 6e-8). ``B`` is taken as the cone width; the total width ``T``
+between 0.15 and 0.20); oil-jet lubrication takes ``K_rs = 3e-8`` with the low-level oil bath, as
+every reprint of the catalogue found gives it (``../shared/reference/skf_friction_model.toml``
+groups oil jet with oil-air at 6e-8; the catalogue's own page, whose formulas are images, could
+not be read). ``B`` is taken as the cone width; the total width ``T``
 would be the other reading for a tapered roller bearing. :data:`VERIFY` lists them, and
 :class:`SkfFriction` carries the flag.
 
@@ -119,7 +121,7 @@ MU_BL = 0.15
 MU_EHL = 0.002
 
 #: Replenishment constant K_rs by lubrication method.
-K_RS: dict[str, float] = {"oil_bath": 3e-8, "oil_air": 6e-8, "oil_jet": 6e-8}
+K_RS: dict[str, float] = {"oil_bath": 3e-8, "oil_jet": 3e-8, "oil_air": 6e-8}
 
 #: Values seen only in secondary sources or read from a diagram, to be confirmed against the
 #: catalogue's own tables (``verify = true`` in the reference data).

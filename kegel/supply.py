@@ -42,8 +42,8 @@ moment, the same quantity as Biboulet-Houpert's ``T / T*``, so each raceway cont
    0.2001 at ``S = 2``, is clamped there and flagged).
 
 The ``K_rs`` values and their assignment are those of the catalogue as every secondary source
-that reprints it gives them (oil jet with the low-level oil bath at ``3e-8``); kegel's
-``correlations/skf.py`` reads oil jet as ``6e-8`` (marked ``verify`` there): the catalogue's own
+that reprints it gives them (oil jet with the low-level oil bath at ``3e-8``), one table with the
+SKF column (``kegel.correlations.skf.K_RS``, oil jet marked ``verify`` there): the catalogue's own
 page (formula images) could not be read, see docs/models.md.
 
 The contact / hydraulic boundary g (``model.contact_film_limit``): the contact model owns the oil
@@ -61,6 +61,7 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 from .errors import KegelInputError
+from .correlations.skf import K_RS as SKF_K_RS
 
 __all__ = [
     "K_RS",
@@ -77,8 +78,7 @@ __all__ = [
 ]
 
 #: SKF's replenishment/starvation constant K_rs by lubrication method (catalogue units).
-K_RS: dict[str, float] = {"oil_bath": 3e-8, "oil_jet": 3e-8, "minimum_quantity": 6e-8, "oil_air": 6e-8,
-                          "grease": 6e-8}
+K_RS: dict[str, float] = {**SKF_K_RS, "minimum_quantity": SKF_K_RS["oil_air"], "grease": SKF_K_RS["oil_air"]}
 #: SKF's bearing-type geometry constant K_Z of tapered roller bearings.
 K_Z_TAPERED_ROLLER = 6.0
 #: Supply models of a scene's ``model.lubricant_supply``: ``kinematic_replenishment`` (this
