@@ -101,7 +101,10 @@ def test_run_writes_results_plots_and_provenance_atomically(tmp_path):
     assert res.returncode == 0, res.stderr
     assert "M_fric [Nm]" in res.stdout and "results:" in res.stdout and "plots:" in res.stdout
     files = sorted(p.name for p in out.iterdir())
-    assert files == ["breakdown.png", "results.csv", "results.json", "roller_loads_and_slip.png", "torque.png"]
+    # .kegel-manifest.json: the files kegel wrote, the only ones it will replace (issue 28)
+    assert files == [".kegel-manifest.json", "breakdown.png", "results.csv", "results.json",
+                     "roller_loads_and_slip.png", "torque.png"]
+    assert sorted(json.loads((out / ".kegel-manifest.json").read_text())["files"]) == files[1:]
     data = json.loads((out / "results.json").read_text())
     assert data["provenance"]["kegel_version"] == kegel.__version__
     assert data["provenance"]["sundials_version"].startswith("6.")
