@@ -29,6 +29,7 @@ from .correlations import hydraulic_torques
 from .dynamics import CONTACTS, MECHANISMS
 from .io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
 from .lubricant import lubricant_state
+from .parallel import effective_jobs, point_blocks, solve_blocks
 from .errors import KegelSolverError
 from .dynamics import SimulationDiverged
 from .point_warnings import Warning_, WarningLog, point_warnings
@@ -89,7 +90,8 @@ class _Progress:
 
 def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: bool = True,
               on_point: Callable[[dict[str, Any]], None] | None = None, write: bool = True,
-              force: bool = False, uncertainty: "bool | UncertaintyOptions" = False) -> RunResult:
+              force: bool = False, uncertainty: "bool | UncertaintyOptions" = False, jobs: int | None = 1,
+              client: Any = None) -> RunResult:
     """Solve every operating point of a scene and write the results (see the module docstring);
     ``write=False`` keeps them in memory only (no files, ``files`` empty).
 
@@ -101,10 +103,15 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
     The results are computed in a staging folder beside the output folder and replace the
     previous results only when the run has finished (:class:`kegel.io.RunFolder`); an output
     folder holding files kegel did not write is refused unless ``force``. An interrupted run
-    (Ctrl-C, SIGTERM, a full disk) resumes when run again with the same scene."""
+    (Ctrl-C, SIGTERM, a full disk) resumes when run again with the same scene.
+
+    ``jobs`` processes solve independent points at once (None: every core; 1: this process
+    alone), or ``client``, a ``dask.distributed.Client``, sends them to its cluster
+    (:mod:`kegel.parallel`). The points, their order and the files are those of a run in one
+    process, to the last digit for the quasi-static solution."""
     with signals_interrupt() if write else contextlib.nullcontext():
         return _run_scene(scene, output_dir, progress=progress, on_point=on_point, write=write, force=force,
-                          uncertainty=_uncertainty_options(uncertainty))
+                          uncertainty=_uncertainty_options(uncertainty), jobs=jobs, client=client)
 
 
 def _uncertainty_options(uncertainty: "bool | UncertaintyOptions | None") -> "UncertaintyOptions | None":
@@ -123,7 +130,8 @@ def _uncertainty_options(uncertainty: "bool | UncertaintyOptions | None") -> "Un
 
 def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
                on_point: Callable[[dict[str, Any]], None] | None, write: bool, force: bool,
-               uncertainty: "UncertaintyOptions | None" = None) -> RunResult:
+               uncertainty: "UncertaintyOptions | None" = None, jobs: int | None = 1,
+               client: Any = None) -> RunResult:
     t_start = time.perf_counter()
     out = Path(output_dir) if output_dir is not None else scene.output_directory
     g, b, m = scene.geometry, scene.bearing, scene.material
@@ -143,7 +151,51 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     try:
         bar = _Progress(len(scene.operating_points), progress)
         points: list[dict[str, Any]] = []
-        for op in scene.operating_points:
+
+        def finish_point(point: dict[str, Any]) -> dict[str, Any]:
+            # the parent's share of a point (paths, study rows, warnings, the stream), in the
+            # order the points finish; the caller keeps the scene's order
+            if folder is not None:
+                point = folder.final(point)  # paths into the staging folder: where they will be
+            if scene.study is not None and point.get("solved", True):
+                point["study"] = study_rows(scene, point, study_cfd)
+            warns = point_warnings(scene, point, friction)
+            point["warnings"] = [w.as_dict() for w in warns]
+            warn_log.add(point["index"], warns)
+            if folder is not None:
+                folder.add(point)
+            return point
+
+        # the points in fixed chains (kegel.parallel.point_blocks): a quasi-static point is
+        # warm-started from the one before it within its chain only, so that any number of
+        # processes gives the same figures, to the last digit, as this process alone
+        blocks = point_blocks(scene, fid)
+        pending = [[i for i in blk if i not in done] for blk in blocks]
+        pending = [blk for blk in pending if blk]
+        n_proc = effective_jobs(jobs, len(pending), client)
+        if n_proc > 1 or client is not None:
+            finished: dict[int, dict[str, Any]] = {}
+            # the workers are stopped on any exception here (contextlib.closing)
+            with contextlib.closing(solve_blocks(scene, fid, pending, work, uncertainty, jobs=n_proc,
+                                                 client=client)) as solved:
+                for idx, point in solved:
+                    finished[idx] = finish_point(point)
+                    while len(points) < len(scene.operating_points):  # on_point in the scene's order
+                        op = scene.operating_points[len(points)]
+                        label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
+                        if op.index in done:
+                            points.append(done[op.index])
+                            warn_log.add(op.index, [Warning_(**w) for w in done[op.index].get("warnings", ())])
+                            bar.update(len(points), label + " (resumed)")
+                            continue
+                        if op.index not in finished:
+                            break
+                        points.append(finished.pop(op.index))
+                        if on_point:
+                            on_point(points[-1])
+                        bar.update(len(points), label)
+        starts = {blk[0] for blk in blocks}
+        for op in scene.operating_points[len(points):]:
             label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
             if op.index in done:
                 # finished by an interrupted run of the same scene, fidelity and version (a point's
@@ -152,36 +204,12 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
                 warn_log.add(op.index, [Warning_(**w) for w in done[op.index].get("warnings", ())])
                 bar.update(len(points), label + " (resumed)")
                 continue
-            try:
-                # the raceway contacts' inlet supply at this point (kegel.supply); a study's own
-                # point has flooded contacts, each of its lubrications is solved with its supply
-                op_friction, supply = _point_friction(scene, friction, op)
-                if fid.solution == "dynamic":
-                    point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
-                else:
-                    point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
-                if uncertainty is not None:
-                    point["uncertainty"] = _point_band(scene, fid, op, op_friction, point, uncertainty)
-                point["lubricant_supply"] = supply.as_dict()
-                if scene.study is not None and point.get("solved", True):
-                    point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model)
-            except (KegelSolverError, SimulationDiverged) as exc:
-                # the run keeps the points that finished and goes on: this one is recorded as
-                # failed with the solver's message (and never warm-starts the next point)
-                point = _failed_record(op, exc)
-                data = _core.quasi_static.BearingData(model)
-            if folder is not None:
-                point = folder.final(point)  # paths into the staging folder: where they will be
-            if scene.study is not None and point.get("solved", True):
-                point["study"] = study_rows(scene, point, study_cfd)
-            warns = point_warnings(scene, point, friction)
-            point["warnings"] = [w.as_dict() for w in warns]
-            warn_log.add(op.index, warns)
-            points.append(point)
-            if folder is not None:
-                folder.add(point)
+            if op.index in starts:
+                data = _core.quasi_static.BearingData(model)  # a chain starts from a fresh state
+            point, data = _solve_point(scene, fid, op, friction, model, data, work, progress, cfd_runs, uncertainty)
+            points.append(finish_point(point))
             if on_point:
-                on_point(point)
+                on_point(points[-1])
             bar.update(len(points), label)
         bar.close()
         if warn_log.counts and progress:
@@ -209,6 +237,31 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     finally:
         if folder is not None:
             folder.close()
+
+
+def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: Path, progress: bool,
+                 cfd_runs, uncertainty: "UncertaintyOptions | None"):
+    """One operating point's record (a failed record when its solver raised) and the state to
+    warm-start the next point of its chain from; :mod:`kegel.parallel` calls it in the workers."""
+    try:
+        # the raceway contacts' inlet supply at this point (kegel.supply); a study's own
+        # point has flooded contacts, each of its lubrications is solved with its supply
+        op_friction, supply = _point_friction(scene, friction, op)
+        if fid.solution == "dynamic":
+            point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
+        else:
+            point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
+        if uncertainty is not None:
+            point["uncertainty"] = _point_band(scene, fid, op, op_friction, point, uncertainty)
+        point["lubricant_supply"] = supply.as_dict()
+        if scene.study is not None and point.get("solved", True):
+            point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model)
+    except (KegelSolverError, SimulationDiverged) as exc:
+        # the run keeps the points that finished and goes on: this one is recorded as
+        # failed with the solver's message (and never warm-starts the next point)
+        point = _failed_record(op, exc)
+        data = _core.quasi_static.BearingData(model)
+    return point, data
 
 
 def preflight(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
