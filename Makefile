@@ -56,7 +56,7 @@ $(VENV)/bin/python:
 
 $(STAMP)/venv: $(VENV)/bin/python pyproject.toml
 	$(PIP) install -q --upgrade pip
-	$(PIP) install -q $(BUILD_PACKAGES) "pytest>=7" "pandas>=1.5" "hypothesis>=6"
+	$(PIP) install -q $(BUILD_PACKAGES) "pytest>=7" "pandas>=1.5" "hypothesis>=6" "dask[distributed]>=2023.1"
 	@mkdir -p $(STAMP) && touch $@
 
 $(STAMP)/install: $(STAMP)/venv $(CORE_SOURCES)

@@ -533,8 +533,17 @@ def _cmd_run(args: argparse.Namespace) -> int:
         from .uncertainty import UncertaintyOptions
 
         options = UncertaintyOptions(crown_drop_fraction=args.crown_drop)
-    result = run_scene(scene, out_dir, progress=args.format != "json", force=args.force,
-                       uncertainty=options or False)
+    client = None
+    if args.scheduler:  # a Dask cluster solves the points (kegel.parallel)
+        from .parallel import connect
+
+        client = connect(args.scheduler)
+    try:
+        result = run_scene(scene, out_dir, progress=args.format != "json", force=args.force,
+                           uncertainty=options or False, jobs=args.jobs, client=client)
+    finally:
+        if client is not None:
+            client.close()
     if args.format == "json":
         _json_out({"scene": scene.name, "files": result.files, "runtime_s": result.runtime_s,
                    "points": result.points})
@@ -787,6 +796,12 @@ def _parser() -> argparse.ArgumentParser:
             sp.add_argument("--crown-drop", type=float, default=0.25, metavar="FRACTION",
                             help="relative change of the crown drop for --uncertainty (default 0.25: assumed, no "
                                  "source gives a tolerance)")
+            sp.add_argument("--jobs", type=int, metavar="N",
+                            help="processes solving independent points at once (default: every core; 1: one "
+                                 "process). The results equal a run in one process")
+            sp.add_argument("--scheduler", metavar="ADDRESS",
+                            help="solve the points on a Dask cluster: its scheduler's address (tcp://host:8786) or "
+                                 "scheduler file (needs dask.distributed: pip install 'kegel[dask]')")
     return p
 
 
