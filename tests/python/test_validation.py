@@ -93,7 +93,8 @@ def test_the_engineering_models_are_information_not_targets(models):
 MEASURED = {
     "Table 1": (0.175, -0.419),
     "Table 2": (0.199, -0.444),
-    "Table 3": (0.268, -0.402),
+    "Table 3": (0.264, -0.381),  # boundary/cage friction mu 0.2 (Zhou-Hoeprich Eq. 33, issue 27 item 2): the
+    # cage pockets of the 11-15 kN points (Eq. 37, the same law) brake harder; with mu 0.1: (0.269, -0.403)
 }
 
 
