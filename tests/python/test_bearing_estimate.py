@@ -245,3 +245,15 @@ def test_boundary_bearing_file(tmp_path):
     b = D.load_bearing(str(p))
     assert b.designation == "mine" and b.roller_count == 18 and b.estimated
     assert b.roller_mean_diameter_m == pytest.approx(D.load_bearing("30210").roller_mean_diameter_m, rel=1e-12)
+
+
+def test_estimated_table_bearings_solve():
+    """Every 8th bearing of the series table (19 sizes, series 302-330, d 17-160 mm) at Fa = 0.05 C0r,
+    n d_m <= 5e5 rpm mm (at most 2000 rpm), 50 degC, FVA 3: every point converges with a positive torque."""
+    m, lub, fr = D.load_material("bearing_steel"), D.load_lubricant("FVA3"), load_friction("steel_mineral_oil")
+    for name in D.series_designations()[::8]:
+        b = D.load_bearing(name)
+        rpm = min(2000.0, 0.5e6 / (b.pitch_diameter_m / MM))
+        _, r = bearing_friction(derive_geometry(b, m), b, m, lub, fr, temperature_K=323.15,
+                                inner_speed_rad_s=rpm * math.pi / 30, axial_N=0.05 * b.C0r_N, slices=12, rib_cells=0)
+        assert r.converged and r.drive_torque_Nm > 0.0, name
