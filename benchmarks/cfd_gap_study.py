@@ -93,6 +93,37 @@ def write(rows: list[dict], command: str, note: str) -> None:
     atomic_write_json(OUT, {"command": command, "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, Fa = 1 kN",
                             "note": note, "rows": rows, "kegel_version": kegel.__version__,
                             "provenance": provenance()})
+    plot(rows, OUT.with_suffix(".png"))
+
+
+def plot(rows: list[dict], path: Path) -> None:
+    """CFD, contact and their sum against 1/sqrt(g / D_w) for the sector rows of the finest cells."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for n in sorted({r["cells_across_gap"] for r in rows if r["sector"]}):
+        sel = sorted((r for r in rows if r["sector"] and r["cells_across_gap"] == n), key=lambda r: r["inv_sqrt_gap"])
+        x = [r["inv_sqrt_gap"] for r in sel]
+        ax.plot(x, [1e3 * r["cfd_loss_Nm"] for r in sel], "o-", label=f"CFD (n = {n} cells across)")
+        with_contact = [r for r in sel if r.get("contact")]
+        if with_contact:
+            xc = [r["inv_sqrt_gap"] for r in with_contact]
+            ax.plot(xc, [1e3 * r["contact"]["friction_torque_Nm"] for r in with_contact], "s--",
+                    label="contact friction, cut at g")
+            ax.plot(xc, [1e3 * r["sum_Nm"] for r in with_contact], "D-", label=f"contact + CFD (n = {n})")
+    ax.set_xlabel("1 / sqrt(g / D_w)")
+    ax.set_ylabel("torque at the shaft [mN m]")
+    ax.set_title("32208 flooded, 2000 rpm, 50 degC, 1 kN: the contact / CFD split")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    tmp = path.with_name("." + path.name + ".tmp.png")
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    tmp.replace(path)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -101,12 +132,17 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cells", type=int, default=3)
     ap.add_argument("--mesh", default="tiny")
     ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--report", action="store_true", help="only re-read the stored rows: contact losses and plot")
     ap.add_argument("--check-sector", action="store_true",
                     help="run g = 0.08 with one cell across as a sector and as the whole bearing")
     args = ap.parse_args(argv)
     command = "benchmarks/cfd_gap_study.py " + " ".join(sys.argv[1:] if argv is None else argv)
     rows: list[dict] = []
     previous = json.loads(OUT.read_text()).get("rows", []) if OUT.is_file() else []
+    if args.report:
+        write(previous, json.loads(OUT.read_text())["command"] if OUT.is_file() else command,
+              "rows of earlier invocations are kept; each row names its case")
+        return 0
     if args.check_sector:
         plan = [(0.08, 1, args.mesh, True), (0.08, 1, args.mesh, False)]
     else:
