@@ -172,7 +172,7 @@ class Bearing:
                 f"fidelity={self.fidelity!r})")
 
     def scene(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None, radial_load: Any = None,
-              axial_offset: Any = None, lubrication: Any = "minimum_quantity", hydraulic: str | None = None,
+              axial_offset: Any = None, lubrication: Any = "half_roller", hydraulic: str | None = None,
               speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
               temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
               radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
@@ -205,7 +205,7 @@ class Bearing:
         }
 
     def friction(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None,
-                 radial_load: Any = None, axial_offset: Any = None, lubrication: Any = "minimum_quantity",
+                 radial_load: Any = None, axial_offset: Any = None, lubrication: Any = "half_roller",
                  hydraulic: str | None = None, speed_rpm: Any = None, speed_rad_s: Any = None,
                  temperature_degC: Any = None, temperature_K: Any = None, axial_load_N: Any = None,
                  axial_load_kN: Any = None, radial_load_N: Any = None, radial_load_kN: Any = None,
@@ -232,9 +232,10 @@ class Bearing:
             Axial offset of the inner ring towards the apex (displacement-controlled preload),
             e.g. ``"20 um"``.
         lubrication
-            ``"minimum_quantity"`` (no oil bath) or the oil level of an oil bath: ``"flooded"``,
-            ``"shaft_center"``, ``"half_roller"`` or a height above the lowest point of the
-            outer diameter with its unit (``"40 mm"``, or a pint quantity).
+            The oil level of an oil bath: ``"half_roller"`` (the default: the oil at the centre of
+            the lowest roller, SKF's recommended level and the seed paper's tests), ``"flooded"``,
+            ``"shaft_center"`` or a height above the lowest point of the outer diameter with its
+            unit (``"40 mm"``, or a pint quantity); or ``"minimum_quantity"`` (no oil bath).
         hydraulic
             Hydraulic loss of the oil bath: ``None`` (Liebrecht for an oil bath, none for minimum
             quantity), ``"liebrecht"``, ``"skf"`` (SKF catalogue drag moment) or ``"none"``.
