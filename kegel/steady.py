@@ -246,8 +246,8 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
        ramp, is still a drift); where it does not, the part starts later, a step at a time.
 
     The signals are settled when the check at the end passes and the run of passes lasts at
-    least ``hold`` (default: two windows): a settled part is at least two windows and ``hold``
-    long. A transient that dies out (a speed ramp's inertia torque, a cage's free flight) ends
+    least ``hold`` (default: one window): a settled part is at least two windows and ``hold``
+    long, and the run at least three windows and ``hold``. A transient that dies out (a speed ramp's inertia torque, a cage's free flight) ends
     before it; a drift that does not slow down never passes.
 
     Parameters
@@ -273,7 +273,7 @@ def settled_window(t: np.ndarray, integrals: dict[str, np.ndarray], window: floa
     t = np.asarray(t, dtype=float)
     if not window > 0.0 or not tol > 0.0:
         raise ValueError(f"settled_window: window = {window!r}, tol = {tol!r}: expected both > 0")
-    hold = 2.0 * window if hold is None else float(hold)
+    hold = window if hold is None else float(hold)
     step = 0.25 * window if step is None else float(step)
     floors = floors or {}
     t0, t_end = (float(t[0]), float(t[-1])) if len(t) else (0.0, 0.0)
