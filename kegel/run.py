@@ -779,8 +779,9 @@ def _not_settled(steady: dict[str, Any], duration_s: float) -> str:
     need = max(3 * info["window_s"], 2 * info["window_s"] + info["hold_s"])  # kegel.steady.settled_window
     return (f"the dynamic run has not settled: {info['reason']}; the figures are the means over "
             f"{steady['window_start_s'] * 1e3:.4g}-{steady['window_end_s'] * 1e3:.4g} ms, not a steady answer. "
-            f"The steady test needs {need * 1e3:.3g} ms of settled running after the last speed or load change: "
-            f"lengthen dynamic.duration (now {duration_s * 1e3:.4g} ms)")
+            f"The steady test needs {need * 1e3:.3g} ms of settled running after the transients of the last speed "
+            f"or load change ({(need + info['window_s']) * 1e3:.3g} ms for a run steady from its start): lengthen "
+            f"dynamic.duration (now {duration_s * 1e3:.4g} ms)")
 
 
 def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
