@@ -519,7 +519,7 @@ def _one_quantity(value: Any, key: str, name: str) -> str:
         parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
         return value
     if _is_pint_quantity(value):
-        si = parse_quantity(_as_ureg_quantity(value, key), _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
+        si = parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
         return f"{si!r} {kind.si_unit}"
     unit_keys = " or ".join(f"{k}=" for k, (q, _) in UNIT_KEYWORDS.items() if q == name)
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
@@ -552,20 +552,10 @@ def _unit_number_text(value: Any, key: str, keyword: str) -> str:
 
 
 def _is_pint_quantity(value: Any) -> bool:
-    """A pint quantity of any registry (its class differs between registries)."""
-    return hasattr(value, "magnitude") and hasattr(value, "units") and hasattr(value, "dimensionality")
-
-
-def _as_ureg_quantity(value: Any, key: str) -> Any:
-    """A scalar pint quantity of any registry (:func:`kegel.units.parse_quantity` converts it)."""
-    if np.ndim(value.magnitude) != 0:
-        raise KegelInputError(_SOURCE_FRICTION, key, str(value),
-                              "one value per pint quantity (a sweep: a list of quantities)")
+    """A pint quantity (of any registry; :func:`kegel.units.parse_quantity` converts it)."""
     import pint
 
-    if isinstance(value, pint.Quantity):
-        return value
-    return pint.Quantity(float(value.magnitude), str(value.units))
+    return isinstance(value, pint.Quantity)
 
 
 def _lubrication_table(lubrication: Any) -> dict[str, Any]:
@@ -583,8 +573,7 @@ def _lubrication_table(lubrication: Any) -> dict[str, Any]:
                                   f"{expected}; here {exc.expected}") from None
         return {"mode": "oil_bath", "oil_level": lubrication}
     if _is_pint_quantity(lubrication):
-        level = parse_quantity(_as_ureg_quantity(lubrication, "lubrication"), "length", source=_SOURCE_FRICTION,
-                               key="lubrication")
+        level = parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
         return {"mode": "oil_bath", "oil_level": f"{level!r} m"}
     raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected)
 
