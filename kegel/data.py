@@ -376,12 +376,15 @@ def bearing_from_scene(table: dict[str, Any], *, source: Callable[[str], str]) -
         total_width_m=q("T", "length"), cone_width_m=q("B", "length"), cup_width_m=q("C", "length"),
         contact_angle_rad=alpha, C0r_N=q("C0r", "force"),
         roller_count=int(num("Z", integer=True)) if "Z" in table else None)
+    # the source names --set when it changed any of the dimensions
+    src = next((source(f"bearing.{k}") for k in given if source(f"bearing.{k}") != source("bearing")),
+               source("bearing"))
     try:
         boundary.check()
     except EstimateError as exc:
-        raise KegelInputError(source("bearing"), "bearing", designation, f"boundary dimensions of a tapered roller "
+        raise KegelInputError(src, "bearing", designation, f"boundary dimensions of a tapered roller "
                               f"bearing ({exc})") from None
-    return bearing_from_boundary(boundary, source=source("bearing"), key="bearing",
+    return bearing_from_boundary(boundary, source=src, key="bearing",
                                  axial_load_factor_Y=num("Y") if "Y" in table else None)
 
 
