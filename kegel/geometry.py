@@ -429,8 +429,8 @@ def geometry_table(g: BearingGeometry) -> list[tuple[str, float, str]]:
         ("cage pocket clearance, circumferential", g.cage_pocket_clearance_circumferential_m * mm, "mm"),
         ("cage pocket clearance, axial", g.cage_pocket_clearance_axial_m * mm, "mm"),
         ("roller mass", g.roller_mass_kg * 1e3, "g"),
-        ("roller inertia, axial", g.roller_inertia_axial_kgm2 * 1e9, "kg mm^2"),
-        ("roller inertia, transverse (CoM)", g.roller_inertia_transverse_kgm2 * 1e9, "kg mm^2"),
+        ("roller inertia, axial", g.roller_inertia_axial_kgm2 * 1e9, "g mm^2"),
+        ("roller inertia, transverse (CoM)", g.roller_inertia_transverse_kgm2 * 1e9, "g mm^2"),
         ("apex residual (relative)", apex_residual(g), "-"),
     ]
     return rows
