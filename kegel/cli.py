@@ -74,6 +74,10 @@ def _json_out(data: Any) -> None:
     sys.stdout.write("\n")
 
 
+TORQUE_SPLIT_NOTE = ("sliding + rolling = M_fric (split by mechanism); of which rib: the roller end / rib "
+                     "contact's share of M_fric (split by contact), already inside sliding and rolling")
+
+
 def _cmd_bearing(args: argparse.Namespace) -> int:
     bearing = load_bearing(args.bearing, source="command line", key="--bearing")
     material = load_material(args.material, source="command line", key="--material")
@@ -565,20 +569,21 @@ def _cmd_run(args: argparse.Namespace) -> int:
         if not p.get("solved", True):
             rows.append((p["index"], p["speed_rpm"], p["temperature_degC"],
                          f"{p['axial_load_N'] / 1e3:g}" if p["axial_load_N"] is not None else "",
-                         p["radial_load_N"] / 1e3, *([None] * 9), "FAILED"))
+                         p["radial_load_N"] / 1e3, *([None] * 10), "FAILED"))
             continue
         mech = p["torque_by_mechanism_Nm"]
         axial = f"{p['axial_load_N'] / 1e3:g}" if p["axial_load_N"] is not None else f"{p['axial_force_N'] / 1e3:.2f}*"
         rows.append((p["index"], p["speed_rpm"], p["temperature_degC"], axial, p["radial_load_N"] / 1e3,
                      p["friction_torque_Nm"], p["hydraulic_torque_Nm"], p["total_torque_Nm"],
-                     100 * p["cage_slip"], mech["ehl_sliding"] + mech["solid_sliding"],
+                     abs(p["total_torque_Nm"] * p["speed_rad_s"]), 100 * p["cage_slip"], mech["ehl_sliding"] + mech["solid_sliding"],
                      mech["ehl_rolling"] + mech["solid_rolling"] + mech["hysteresis"],
                      p["torque_by_contact_Nm"]["rib"], min(p["Lambda_min"].values()),
                      (p.get("skf_catalogue_model") or {}).get("rolling_sliding_Nm", float("nan")),
                      "yes" if p["converged"] else "FAILED"))
     _print_table(("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
-                  "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "rib [Nm]", "Lambda_min", "SKF rr+sl [Nm]",
-                  "converged"), rows, max_rows=MAX_TABLE_ROWS, where="results.csv")
+                  "P_loss [W]", "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "of which rib [Nm]", "Lambda_min",
+                  "SKF rr+sl [Nm]", "converged"), rows, max_rows=MAX_TABLE_ROWS, where="results.csv")
+    print("  " + TORQUE_SPLIT_NOTE)
     if any(p.get("skf_catalogue_model") for p in result.points):
         print("  SKF rr+sl: the SKF catalogue model's rolling + sliding moment (an independent engineering model; "
               "kegel.correlations.skf), beside M_fric")

@@ -40,3 +40,46 @@ def test_bearing_table_roller_inertia_value_matches_its_unit():
     assert inertia_kgm2 == pytest.approx(cylinder, rel=0.01)
     value, unit = rows["roller inertia, transverse (CoM)"]
     assert value * _TO_KGM2[unit] == pytest.approx(g.roller_inertia_transverse_kgm2, rel=1e-3)  # printed to 4 digits
+
+
+# --- Finding: the console table's "sliding, rolling, rib" do not add up (rib is inside sliding) ---
+
+
+def _printed_table(out: str) -> tuple[list[str], list[list[str]]]:
+    """Header cells and data rows of the table `kegel run` prints (split on two spaces)."""
+    lines = out.splitlines()
+    i = next(k for k, line in enumerate(lines) if line.startswith("#  "))
+    header = [c.strip() for c in lines[i].split("  ") if c.strip()]
+    rows = []
+    for line in lines[i + 2:]:
+        if not line[:1].isdigit():
+            break
+        rows.append(line.split())
+    return header, rows
+
+
+def _scene_32208(tmp_path, lubrication='mode = "minimum_quantity"', name="s") -> str:
+    path = tmp_path / f"{name}.toml"
+    path.write_text(scene_text(speed='["1000 rpm", "3000 rpm"]', lubrication=lubrication)
+                    .replace('"32216"', '"32208"'))
+    return str(path)
+
+
+def test_run_table_torque_split_adds_up_and_power_loss_is_beside_the_torque(tmp_path):
+    """The columns the table gives as the split of M_fric add up to it (a part shown inside
+    another is labelled "of which" and the note says so), and P_loss = M_total x omega."""
+    code, out, err = call_kegel("run", _scene_32208(tmp_path), "--output", str(tmp_path / "o"))
+    assert code == 0, err
+    header, rows = _printed_table(out)
+    col = {h: k for k, h in enumerate(header)}
+    parts = [h for h in header if h in ("sliding [Nm]", "rolling [Nm]", "rib [Nm]")]
+    assert "of which rib [Nm]" in header
+    assert "sliding + rolling = M_fric" in out
+    assert len(rows) == 2
+    for row, rpm in zip(rows, (1000, 3000)):
+        m_fric = float(row[col["M_fric [Nm]"]])
+        assert sum(float(row[col[h]]) for h in parts) == pytest.approx(m_fric, rel=2e-3)
+        assert float(row[col["of which rib [Nm]"]]) < float(row[col["sliding [Nm]"]]) \
+            + float(row[col["rolling [Nm]"]])
+        p_loss = float(row[col["P_loss [W]"]])
+        assert p_loss == pytest.approx(float(row[col["M_total [Nm]"]]) * rpm * 2 * math.pi / 60, rel=2e-3)
