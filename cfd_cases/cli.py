@@ -340,31 +340,70 @@ def _cmd_check_solvers(args: argparse.Namespace) -> int:
     return 0 if ok else 1
 
 
+#: ``kegel cfd validate`` cases, in the order they run.
+VALIDATE_CASES = ("taylor_couette", "rotating_tank", "rolling_gap", "rotor_stator")
+
+
 def _cmd_validate(args: argparse.Namespace) -> int:
     from dataclasses import asdict
 
-    from .validation import rotating_tank, taylor_couette
+    from .validation import cylinder_rolling_gap, rotating_tank, rotor_stator, taylor_couette
 
-    # two small OpenFOAM runs: say what runs, so minutes of silence are not mistaken for a hang
+    chosen = [c for c in VALIDATE_CASES if c in (args.case or VALIDATE_CASES)]
+    # small OpenFOAM runs: say what runs, so minutes of silence are not mistaken for a hang
     t0 = time.monotonic()
-    print("cfd validate: 1/2 Taylor-Couette annulus (simpleFoam, steady) ...", file=sys.stderr, flush=True)
-    tc = taylor_couette()
-    print(f"cfd validate: 2/2 rotating tank (interFoam, VOF) ... ({time.monotonic() - t0:.0f} s so far)",
-          file=sys.stderr, flush=True)
-    tank = rotating_tank()
+    out: dict[str, Any] = {}
+    lines: list[str] = []
+    ok = True
+
+    def step(i: int, text: str) -> None:
+        print(f"cfd validate: {i}/{len(chosen)} {text} ... ({time.monotonic() - t0:.0f} s so far)",
+              file=sys.stderr, flush=True)
+
+    for i, name in enumerate(chosen, 1):
+        if name == "taylor_couette":
+            step(i, "Taylor-Couette annulus (simpleFoam, steady)")
+            tc = taylor_couette()
+            passed = abs(tc.relative_error) < 0.02
+            out[name] = tc
+            lines.append(f"Taylor-Couette (Re {tc.reynolds:.0f}, {tc.cells} cells): torque {tc.torque_simulated_Nm:.6g} N m, "
+                         f"analytic {tc.torque_analytic_Nm:.6g} N m, error {100 * tc.relative_error:+.3f} % "
+                         f"({'PASS' if passed else 'FAIL'}, limit 2 %)")
+        elif name == "rotating_tank":
+            step(i, "rotating tank (interFoam, VOF)")
+            tank = rotating_tank()
+            passed = tank.max_height_error_m < 0.25 * tank.cell_height_m and abs(tank.volume_change) < 1e-4
+            out[name] = tank
+            lines.append(f"rotating tank (VOF, {tank.cells} cells): free surface within {tank.max_height_error_m * 1e3:.3f} mm "
+                         f"of the paraboloid (cell height {tank.cell_height_m * 1e3:.1f} mm), oil volume change "
+                         f"{tank.volume_change:.2e} ({'PASS' if passed else 'FAIL'})")
+        elif name == "rolling_gap":
+            step(i, "cylinder rolling in a ring, h0/R1 = 0.05, 6 cells across the gap (simpleFoam, creeping flow)")
+            rg = cylinder_rolling_gap(gap_ratio=0.05, cells_across_gap=6.0)
+            errs = (rg.error_torque_inner, rg.error_torque_outer, rg.error_dissipation)
+            passed = max(abs(e) for e in errs) < 0.02
+            out[name] = rg
+            lines.append(f"cylinder rolling near a wall (h0/R1 {rg.gap_ratio:g}, {rg.cells_across_gap:g} cells across the gap, "
+                         f"{rg.cells} cells) against Wannier's exact Stokes flow: torque on the cylinder "
+                         f"{100 * rg.error_torque_inner:+.2f} %, on the ring {100 * rg.error_torque_outer:+.2f} %, "
+                         f"dissipation {100 * rg.error_dissipation:+.2f} % ({'PASS' if passed else 'FAIL'}, limit 2 %)")
+        elif name == "rotor_stator":
+            for regime, limit in (("I", 0.05), ("II", 0.10)):
+                step(i, f"rotor-stator cavity, Daily-Nece regime {regime} (simpleFoam, axisymmetric)")
+                rs = rotor_stator(regime=regime)
+                p = abs(rs.relative_error) < limit
+                passed = p if regime == "I" else passed and p
+                out[f"{name}_{regime}"] = rs
+                lines.append(f"rotor-stator regime {regime} (Re {rs.reynolds:.0f}, s/a {rs.gap_ratio:g}, {rs.cells} cells): "
+                             f"C_M {rs.moment_coefficient_sim:.5g}, Daily & Nece {rs.moment_coefficient_ref:.5g}, error "
+                             f"{100 * rs.relative_error:+.2f} % ({'PASS' if p else 'FAIL'}, limit {100 * limit:.0f} %)")
+        ok &= passed
     print(f"cfd validate: done in {time.monotonic() - t0:.0f} s", file=sys.stderr, flush=True)
-    ok_tc = abs(tc.relative_error) < 0.02
-    ok_tank = tank.max_height_error_m < 0.25 * tank.cell_height_m and abs(tank.volume_change) < 1e-4
     if args.format == "json":
-        print(json.dumps({"taylor_couette": asdict(tc), "rotating_tank": asdict(tank)}, indent=2))
+        print(json.dumps({k: asdict(v) for k, v in out.items()}, indent=2))
     else:
-        print(f"Taylor-Couette (Re {tc.reynolds:.0f}, {tc.cells} cells): torque {tc.torque_simulated_Nm:.6g} N m, "
-              f"analytic {tc.torque_analytic_Nm:.6g} N m, error {100 * tc.relative_error:+.3f} % "
-              f"({'PASS' if ok_tc else 'FAIL'}, limit 2 %)")
-        print(f"rotating tank (VOF, {tank.cells} cells): free surface within {tank.max_height_error_m * 1e3:.3f} mm "
-              f"of the paraboloid (cell height {tank.cell_height_m * 1e3:.1f} mm), oil volume change "
-              f"{tank.volume_change:.2e} ({'PASS' if ok_tank else 'FAIL'})")
-    return 0 if ok_tc and ok_tank else 1
+        print("\n".join(lines))
+    return 0 if ok else 1
 
 
 def add_cfd_parser(sub, common) -> None:
@@ -435,6 +474,9 @@ def add_cfd_parser(sub, common) -> None:
     c.add_argument("--stock", action="store_true", help="also check Debian's binaries (interFoam fails)")
     common(c)
     c.set_defaults(func=_cmd_check_solvers)
-    v = csub.add_parser("validate", help="Taylor-Couette torque and rotating-tank free surface through the CFD pipeline")
+    v = csub.add_parser("validate", help="cases with published answers through the CFD pipeline: Taylor-Couette torque, "
+                                         "rotating-tank free surface, cylinder rolling near a wall, rotor-stator cavity")
+    v.add_argument("--case", action="append", choices=VALIDATE_CASES,
+                   help="run only this case (repeatable; default: all)")
     common(v)
     v.set_defaults(func=_cmd_validate)

@@ -417,8 +417,20 @@ def test_finding8_cfd_validate_says_what_runs_before_it_runs(monkeypatch):
         seen["tank"] = err.getvalue()
         return SimpleNamespace(max_height_error_m=1e-4, cell_height_m=1e-3, volume_change=1e-6, cells=1000)
 
+    def rolling_gap(**kw):
+        seen["rolling_gap"] = err.getvalue()
+        return SimpleNamespace(gap_ratio=0.05, cells_across_gap=6.0, cells=9000, error_torque_inner=0.01,
+                               error_torque_outer=0.01, error_dissipation=-0.01)
+
+    def rotor_stator(regime="II", **kw):
+        seen[f"rotor_stator_{regime}"] = err.getvalue()
+        return SimpleNamespace(reynolds=1e4, gap_ratio=0.1, cells=3000, moment_coefficient_sim=0.03,
+                               moment_coefficient_ref=0.03, relative_error=0.001)
+
     monkeypatch.setattr(V, "taylor_couette", tc)
     monkeypatch.setattr(V, "rotating_tank", tank)
+    monkeypatch.setattr(V, "cylinder_rolling_gap", rolling_gap)
+    monkeypatch.setattr(V, "rotor_stator", rotor_stator)
     from contextlib import redirect_stderr, redirect_stdout
 
     from kegel.cli import main
@@ -428,6 +440,7 @@ def test_finding8_cfd_validate_says_what_runs_before_it_runs(monkeypatch):
     assert code == 0, err.getvalue()
     assert "Taylor-Couette" in seen["tc"] and "rotating tank" not in seen["tc"]
     assert "rotating tank" in seen["tank"]
+    assert "cylinder rolling" in seen["rolling_gap"] and "regime II" in seen["rotor_stator_II"]
     assert "PASS" in out.getvalue()
 
 
