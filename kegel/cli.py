@@ -562,8 +562,10 @@ def _cmd_run(args: argparse.Namespace) -> int:
           + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
     rib = f"rib cell model {f.rib_cells}x{f.rib_cells}" if f.rib_model == "cell" else "rib closed-form Hertz"
     solution = "quasi-static" if f.solution == "quasi_static" else f"dynamic ({scene.dynamic.duration_s * 1e3:g} ms)"
+    hydraulic = (f"hydraulic loss by the study's methods ({', '.join(scene.study.methods)})"
+                 if scene.study is not None else f"hydraulic {f.hydraulic}")
     print(f"  fidelity {f.name}: {solution}, {f.slices} slices ({f.slice_model.replace('_', ' ')}), {rib}, "
-          f"hydraulic {f.hydraulic}")
+          f"{hydraulic}")
     rows = []
     for p in result.points:
         if not p.get("solved", True):
@@ -580,9 +582,18 @@ def _cmd_run(args: argparse.Namespace) -> int:
                      p["torque_by_contact_Nm"]["rib"], min(p["Lambda_min"].values()),
                      (p.get("skf_catalogue_model") or {}).get("rolling_sliding_Nm", float("nan")),
                      "yes" if p["converged"] else "FAILED"))
-    _print_table(("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
-                  "P_loss [W]", "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "of which rib [Nm]", "Lambda_min",
-                  "SKF rr+sl [Nm]", "converged"), rows, max_rows=MAX_TABLE_ROWS, where="results.csv")
+    header = ("#", "n [rpm]", "T [degC]", "Fa [kN]", "Fr [kN]", "M_fric [Nm]", "M_hyd [Nm]", "M_total [Nm]",
+              "P_loss [W]", "cage slip [%]", "sliding [Nm]", "rolling [Nm]", "of which rib [Nm]", "Lambda_min",
+              "SKF rr+sl [Nm]", "converged")
+    if scene.study is not None:
+        # a study's hydraulic losses and supplies are in its own table below: this one is the
+        # contact friction of flooded contacts alone (no M_hyd / M_total / P_loss of "none")
+        keep = [k for k, h in enumerate(header) if h not in ("M_hyd [Nm]", "M_total [Nm]", "P_loss [W]")]
+        header = tuple(header[k] for k in keep)
+        rows = [tuple(r[k] for k in keep) for r in rows]
+        print("Contact friction of flooded contacts (each lubrication's supply and hydraulic loss: the study "
+              "table below)")
+    _print_table(header, rows, max_rows=MAX_TABLE_ROWS, where="results.csv")
     print("  " + TORQUE_SPLIT_NOTE)
     if any(p.get("skf_catalogue_model") for p in result.points):
         print("  SKF rr+sl: the SKF catalogue model's rolling + sliding moment (an independent engineering model; "

@@ -83,3 +83,20 @@ def test_run_table_torque_split_adds_up_and_power_loss_is_beside_the_torque(tmp_
             + float(row[col["rolling [Nm]"]])
         p_loss = float(row[col["P_loss [W]"]])
         assert p_loss == pytest.approx(float(row[col["M_total [Nm]"]]) * rpm * 2 * math.pi / 60, rel=2e-3)
+
+
+# --- Finding: the 32208 study's first table shows "hydraulic none" ------------------------------
+
+
+def test_study_first_table_does_not_say_hydraulic_none(tmp_path):
+    """`kegel run examples/32208_study.toml`: the header names the study's hydraulic methods, and
+    the first table (contact friction, flooded contacts) has no M_hyd / M_total of "none"."""
+    code, out, err = call_kegel("run", str(EXAMPLES / "32208_study.toml"), "--set", 'model.fidelity="fast"',
+                                "--output", str(tmp_path / "o"))
+    assert code == 0, err
+    head = out.split("Study: total torque")[0]
+    assert "hydraulic none" not in head
+    assert "hydraulic loss by the study's methods (liebrecht, skf, cfd)" in head
+    header, rows = _printed_table(head)
+    assert "M_hyd [Nm]" not in header and "M_total [Nm]" not in header
+    assert len(rows) == 5
