@@ -823,9 +823,12 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``kegel`` command; returns the exit status."""
+    from .point_warnings import warnings_once_per_command
+
     args = _parser().parse_args(argv)
     try:
-        return args.func(args)
+        with warnings_once_per_command():
+            return args.func(args)
     except KegelInputError as exc:
         print(f"kegel: error: {exc}", file=sys.stderr)
         return 2

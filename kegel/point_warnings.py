@@ -58,6 +58,9 @@ from __future__ import annotations
 
 import sys
 import tomllib
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -65,7 +68,8 @@ from typing import Any, TextIO
 
 from .coupling.cfd_results import BALANCE_LIMIT as CFD_BALANCE_LIMIT
 
-__all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables"]
+__all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables",
+           "warnings_once_per_command"]
 
 #: Conditions at which kegel's friction torque has been compared with an outside answer: the SKF
 #: catalogue model at the seed paper's Table 1-3 points (``kegel validate``; examples/32216_table*.toml:
@@ -224,10 +228,27 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
     return out
 
 
+# the (code, message) pairs already printed by this command (None: outside a command, each run
+# prints its own): a command that runs several scenes (`kegel validate`) prints each warning once
+_PRINTED: ContextVar[set[tuple[str, str]] | None] = ContextVar("kegel_printed_warnings", default=None)
+
+
+@contextmanager
+def warnings_once_per_command() -> Iterator[None]:
+    """Within this block every :class:`WarningLog` prints a warning (code and message) at most
+    once, however many runs the block makes; each run still counts its own points."""
+    token = _PRINTED.set(set())
+    try:
+        yield
+    finally:
+        _PRINTED.reset(token)
+
+
 @dataclass
 class WarningLog:
-    """Prints each warning code once per run (the first message with that code) and counts the
-    points that carry it; :meth:`summary` gives the counts."""
+    """Prints each warning code once per run (the first message with that code; within
+    :func:`warnings_once_per_command`, once per command) and counts the points that carry it;
+    :meth:`summary` gives the counts."""
 
     stream: TextIO | None = None
     counts: dict[str, int] = field(default_factory=dict)
@@ -237,7 +258,11 @@ class WarningLog:
         for w in warnings:
             if w.code not in self.counts:
                 self.counts[w.code] = 0
-                print(f"kegel: warning [{w.code}] (point {index}): {w.message}", file=self.stream or sys.stderr)
+                printed = _PRINTED.get()
+                if printed is None or (w.code, w.message) not in printed:
+                    print(f"kegel: warning [{w.code}] (point {index}): {w.message}", file=self.stream or sys.stderr)
+                if printed is not None:
+                    printed.add((w.code, w.message))
             self.counts[w.code] += 1
 
     def summary(self) -> dict[str, int]:

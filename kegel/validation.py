@@ -92,6 +92,7 @@ class Comparison:
     uncertainty: float | None = None           # relative, of a measured reference
     scatter: str = ""                          # known scatter of a model reference, with its source
     note: str = ""
+    plot_stem: str = ""                        # its plot: validation_<plot_stem>.png (models)
 
     @property
     def deviations(self) -> list[float]:
@@ -473,11 +474,12 @@ def model_comparisons(progress: bool = False, overrides: tuple[str, ...] | list[
         c = Comparison(name=f"SKF model at {scene.name}", reference="SKF catalogue model, rolling + sliding",
                        citation="SKF Rolling bearings catalogue, PUB BU/P1 10000 EN, chapter Friction",
                        scatter=SKF_SCATTER, note="an independent engineering model fitted to SKF's measurements, "
-                                                 "not a measurement")
+                                                 "not a measurement", plot_stem=f"skf_{path.stem}")
         a = Comparison(name=f"Aihara 1987 formula at {scene.name}",
                        reference="Aihara's running-torque formula (Eq. 26, 27), rolling + rib",
                        citation=AIHARA, scatter=AIHARA_SCATTER,
-                       note="an independent engineering model (NSK) fitted to measured bearings, not a measurement")
+                       note="an independent engineering model (NSK) fitted to measured bearings, not a measurement",
+                       plot_stem=f"aihara_{path.stem}")
         for p in res.points:
             label = (f"n {p['speed_rpm']:.0f} rpm, {p['temperature_degC']:.0f} degC, "
                      f"Fa {p['axial_force_N'] / 1e3:.1f} kN, Fr {p['radial_load_N'] / 1e3:.1f} kN")
@@ -525,7 +527,7 @@ def run_validation(output_dir: str | Path, *, progress: bool = True) -> dict[str
     plots = {measured.name: str(_plot_measured(measured, curves, out / "validation_measured.png"))}
     for i, c in enumerate(comps):
         if c.reference_Nm and c.kind == "model":
-            plots[c.name] = str(_plot(c, out / f"validation_{i}.png"))
+            plots[c.name] = str(_plot(c, out / f"validation_{c.plot_stem or i}.png"))
     result["plots"] = plots
     result["file"] = str(atomic_write_json(out / "validation.json", result))
     result["objects"] = comps
@@ -626,6 +628,8 @@ def print_report(result: dict[str, Any], file=sys.stdout) -> None:
         print(f"  mean |dev| {100 * c.mean_abs_deviation:.1f} %, worst {100 * c.worst_deviation:+.1f} % "
               f"(kegel against an engineering model: information, not a pass/fail target)", file=file)
     print(f"\nresults: {result['file']}", file=file)
+    for name, path in result.get("plots", {}).items():
+        print(f"plot:    {path}  ({name})", file=file)
 
 
 def _print_measured(c: Comparison, file) -> None:

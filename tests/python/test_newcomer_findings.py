@@ -100,3 +100,23 @@ def test_study_first_table_does_not_say_hydraulic_none(tmp_path):
     header, rows = _printed_table(head)
     assert "M_hyd [Nm]" not in header and "M_total [Nm]" not in header
     assert len(rows) == 5
+
+
+# --- Finding: `kegel validate` prints each warning three times and writes validation_3..6.png ------
+
+
+def test_validate_prints_each_warning_once_and_names_its_plots(tmp_path):
+    """One `kegel validate`: every warning line once (the command solves four scenes), and the
+    plots named after what they compare, each printed with its path."""
+    out_dir = tmp_path / "val"
+    code, out, err = call_kegel("validate", "--output", str(out_dir))
+    assert code == 0, err
+    lines = [line for line in err.splitlines() if line.startswith("kegel: warning [")]
+    # the same code and message (the point index aside) printed once
+    bodies = [line.split("): ", 1)[1] if "): " in line else line for line in lines]
+    assert lines and len(bodies) == len(set(bodies)), "\n".join(lines)
+    pngs = sorted(p.name for p in out_dir.glob("*.png"))
+    assert not [n for n in pngs if n[len("validation_"):-4].isdigit()], pngs
+    for stem in ("skf_32216_table1", "skf_32216_table2", "skf_32216_table3", "aihara_32216_table1"):
+        assert f"validation_{stem}.png" in pngs
+        assert str(out_dir / f"validation_{stem}.png") in out
