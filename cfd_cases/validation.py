@@ -443,7 +443,9 @@ class RollingGapResult:
     force_y_sim_N_m
         Force along the line of centres (zero in creeping flow).
     error_torque_inner, error_torque_outer, error_force_x, error_dissipation
-        Relative errors (simulated - exact) / |exact|.
+        Relative errors (simulated - exact) / |exact|. The torques are negative (the fluid brakes
+        both walls), so a positive torque error means a CFD torque too small in magnitude; the
+        dissipation and the force are positive, a negative error is a CFD value too small.
     cells, iterations, converged, wall_time_s, reynolds
         The run: cells, SIMPLE iterations, whether the residuals reached their targets before the
         iteration limit, wall time, ``v1 R1 / nu``.

@@ -420,7 +420,8 @@ def test_finding8_cfd_validate_says_what_runs_before_it_runs(monkeypatch):
     def rolling_gap(**kw):
         seen["rolling_gap"] = err.getvalue()
         return SimpleNamespace(gap_ratio=0.05, cells_across_gap=6.0, cells=9000, error_torque_inner=0.01,
-                               error_torque_outer=0.01, error_dissipation=-0.01)
+                               error_torque_outer=0.01, error_dissipation=-0.01, torque_inner_sim_N=-0.99,
+                               torque_inner_exact_N=-1.0, torque_outer_sim_N=-0.99, torque_outer_exact_N=-1.0)
 
     def rotor_stator(regime="II", **kw):
         seen[f"rotor_stator_{regime}"] = err.getvalue()
