@@ -286,9 +286,28 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
 
             raise KegelInputError("command line", "--speed/--oil-level", f"{level}, "
                                   f"{point.speed_rad_s * 30 / math.pi:.0f} rpm", str(exc)) from None
-    for level, point in planned:
-        case = out / _case_name(point, level)
-        data = _run_one(point, case, args)
+    # the cases run one after another, in --jobs local processes or as one task each on a Dask
+    # cluster (--scheduler); each keeps its own MPI decomposition (--np cores: the task's
+    # resources on a cluster whose workers declare "cores", see kegel.parallel.task_resources)
+    from kegel.parallel import connect, default_jobs, map_tasks
+
+    if args.jobs is not None and args.jobs < 1:
+        from kegel.errors import KegelInputError
+
+        raise KegelInputError("command line", "--jobs", args.jobs, "at least 1 case at a time")
+    jobs = args.jobs if args.jobs is not None else max(1, default_jobs() // max(1, args.np))
+    cases = [(point, out / _case_name(point, level), args) for level, point in planned]
+    client = connect(args.scheduler) if args.scheduler else None
+    finished: dict[int, dict[str, Any]] = {}
+    try:
+        for n, data in map_tasks(_run_one, cases, jobs=jobs, client=client, cores_per_task=args.np,
+                                 name="kegel-cfd-case"):
+            finished[n] = data
+    finally:
+        if client is not None:
+            client.close()
+    for n, (level, point) in enumerate(planned):  # the rows in the order of the command line
+        case, data = cases[n][1], finished[n]
         rows.append({"oil_level": level, "speed_rpm": point.speed_rad_s * 30 / math.pi,
                      "cfd_loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
                      "cfd_inner_ring_Nm": data["torques_Nm"]["inner_ring"]["total"],
@@ -471,6 +490,11 @@ def add_cfd_parser(sub, common) -> None:
     r.set_defaults(func=_cmd_run)
     s = csub.add_parser("sweep", help="run cases over speeds and oil levels, compare with Liebrecht")
     point_args(s, True)
+    s.add_argument("--jobs", type=int, metavar="N",
+                   help="cases run at once, each on --np cores (default: the cores / --np)")
+    s.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run each case as one task on a Dask cluster: its scheduler's address or scheduler file "
+                        "(workers started with --resources \"cores=N\" run a case only where --np cores are free)")
     s.set_defaults(func=_cmd_sweep)
     c = csub.add_parser("check-solvers", help="rotation check of the rebuilt OpenFOAM solvers")
     c.add_argument("--stock", action="store_true", help="also check Debian's binaries (interFoam fails)")
