@@ -101,7 +101,7 @@ def main(argv: list[str]) -> int:
     meta = {"command": "python benchmarks/coupling_study.py " + " ".join(argv), "axial_load": args.axial_load,
             "speed": args.speed, "duration_ms": duration_ms, "cage_revolutions": args.revolutions,
             "scene": "examples/32208_dynamic_cfd.toml", "rows": rows}
-    tag = f"{args.axial_load}_{args.speed}".replace(" ", "")
+    tag = f"{args.axial_load}_{args.speed}".replace(" ", "") + (f"_{args.only}" if args.only else "")
     out_file = REPO / "benchmarks" / "results" / f"coupling_study_{tag}.json"
     from kegel.io import atomic_write_json
     atomic_write_json(out_file, meta)

@@ -207,7 +207,7 @@ def test_at_light_load_the_oil_slows_cage_and_rollers_as_newton_says(b32208, run
 
     - the cage floats in its pocket play until it meets the rollers: its speed falls below the
       no-oil cage's by M_cage(w) t / I_cage (the CFD's cage torque at its speed, exponent 0.81),
-      and it meets them after about sqrt(2 phi I_cage / M_cage) = 8 ms (phi = 0.2 mm / 30 mm);
+      and it meets them after about sqrt(2 phi I_cage / M_cage) = 8.1 ms (phi = 0.2 mm / 30 mm);
     - the roller set (rollers and, once met, the cage) loses orbital speed at (Z F r + M_cage) /
       (Z m_eff r^2 + I_cage), m_eff between m (spin held) and 1.5 m (spin following the orbit: + I_a /
       rho^2); the spin drag (its torque over rho is four times the orbit drag) reaches the orbit
@@ -236,13 +236,13 @@ def test_at_light_load_the_oil_slows_cage_and_rollers_as_newton_says(b32208, run
     # the cage's free flight: Newton with the CFD's cage torque at 6 ms, before it meets the rollers
     i6 = int(np.searchsorted(t, 6e-3))
     M_c = -law.cage(float(np.mean(wc_oil[: i6 + 1])))
-    assert wc_dry[i6] - wc_oil[i6] == pytest.approx(M_c * t[i6] / I_c, rel=0.03)
+    assert wc_dry[i6] - wc_oil[i6] == pytest.approx(M_c * t[i6] / I_c, rel=1e-3)  # measured: 2e-5
     # ... and it meets them (the lag stops growing) about when the hand estimate says
     phi = g.cage_pocket_clearance_circumferential_m / (0.5 * g.cage_pitch_diameter_m)
     t_meet = math.sqrt(2 * phi * I_c / M_c)
     lag_rate = np.diff(wc_dry - wc_oil)
     first_drop = t[1 + int(np.argmax(lag_rate < 0))]
-    assert 0.8 * t_meet <= first_drop <= 1.3 * t_meet + 5e-4
+    assert 0.9 * t_meet <= first_drop <= 1.1 * t_meet + 5e-4  # measured 8.3 ms, hand 8.1 ms
     # the roller set at 12 ms
     F = -law.orbit(w * 0.418 * r)
     drop = o_dry[-1] - o_oil[-1]
