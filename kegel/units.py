@@ -4,7 +4,7 @@ Every quantity kegel reads (scene files, ``--set``, command-line options, the Py
 through :func:`parse_quantity`, which turns it into an SI float (N, rad/s, K, m, N m, rad, s) or
 raises :class:`~kegel.errors.KegelInputError` naming the file, key and value, in one line.
 
-The grammar of a quantity written as text (:data:`GRAMMAR`) is one number followed by one unit::
+The grammar of a quantity written as text is one number followed by one unit::
 
     quantity := number [space] unit
     number   := [sign] digits ["." [digits]] [exponent] | [sign] "." digits [exponent]
@@ -43,7 +43,7 @@ import pint
 
 from .errors import KegelInputError
 
-__all__ = ["GRAMMAR", "KINDS", "RPM_TO_RAD_S", "K_TO_DEGC_OFFSET", "parse_quantity", "split_quantity", "ureg"]
+__all__ = ["KINDS", "RPM_TO_RAD_S", "K_TO_DEGC_OFFSET", "parse_quantity", "split_quantity", "ureg"]
 
 ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 RPM_TO_RAD_S = 2.0 * math.pi / 60.0
@@ -83,10 +83,6 @@ _UNIT_RE = re.compile(rf"\s*(?P<unit>{_UNIT})")
 _DIGIT_GROUP_RE = re.compile(r"[\s,'’_][0-9]")
 #: Dashes that look like a minus but are none (en dash, hyphen, figure dash, full-width ...).
 _FALSE_MINUS = "\u2010\u2011\u2012\u2013\u2014\u2015\ufe63\uff0d"
-
-#: The grammar in words, for messages and documentation.
-GRAMMAR = ("one number (a decimal point, an optional exponent, '-' or U+2212 for minus; no spaces, commas or "
-           "other separators inside it) followed by one unit")
 
 #: Longest value shown in a message (a pasted paragraph stays one readable line).
 _MAX_SHOWN = 80
@@ -128,7 +124,7 @@ def split_quantity(text: str) -> tuple[str, str] | str:
             fix = f"'{joined}'"
         return (f"a separator inside the number ({number + group!r}): '.' is the decimal point and a number has "
                 f"no thousands separators; write {fix} and its unit")
-    if unit[0] not in " \t" and not re.match(r"[^\W\d_]|°|\s", unit):
+    if not re.match(r"[^\W\d_]|°|\s", unit):
         return f"no unit after the number but {unit.strip()!r}"
     u = _UNIT_RE.fullmatch(unit)
     if u is None:

@@ -15,6 +15,7 @@ naming the key and the value.
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -49,7 +50,9 @@ SEPARATORS = [" ", ",", "'", "_", "\u00a0", "\u2009", "\u202f", "\u2019"]
 #: Text after a quantity that pint multiplied in or dropped.
 TRAILING = [" 2", "2", ".", ";", "*2", "/2", " 2 kN", ",5", " (approx)", "!", " ?", "x2", " * 3"]
 FALSE_MINUS = ["\u2013", "\u2014", "\u2010", "\u2012", "\uff0d"]
-NO_DB = settings(database=None, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+#: Examples per property test (KEGEL_HYPOTHESIS_EXAMPLES=3000 for a deeper search; 3000 passed).
+EXAMPLES = int(os.environ.get("KEGEL_HYPOTHESIS_EXAMPLES", "100"))
+NO_DB = settings(database=None, deadline=None, suppress_health_check=[HealthCheck.too_slow], max_examples=EXAMPLES)
 
 
 def reference_si(number: str, unit: str, kind: str) -> float:
