@@ -191,9 +191,12 @@ def _cmd_losses(args: argparse.Namespace) -> int:
 
     from .correlations import hydraulic_torques
     from .correlations.skf import SkfBearing, skf_bearing, skf_friction, skf_oil_level_H_m
+    from .plots import check_figure_path
     from .scene import resolve_oil_level
 
     src = "command line"
+    if args.plot:
+        check_figure_path(args.plot, source=src, key="--plot")  # before the work, not after it
     bearing = load_bearing(args.bearing, source=src, key="--bearing")
     g = derive_geometry(bearing, load_material(args.material, source=src, key="--material"))
     lub = load_lubricant(args.lubricant, source=src, key="--lubricant")

@@ -48,7 +48,9 @@ __all__ = [
     "PALETTE",
     "PlotMeta",
     "SMALL_HYDRAULIC",
+    "FIGURE_SUFFIXES",
     "build_figures",
+    "check_figure_path",
     "plot_meta_from_scene",
     "run_plots",
     "save_figure",
@@ -662,6 +664,46 @@ def build_figures(points: Sequence[dict[str, Any]], meta: PlotMeta | None = None
         "breakdown_plot": _breakdown_figure(lay, meta, source),
         "loads_plot": _loads_figure(lay, meta),
     }
+
+
+#: File name suffixes a figure can be written to (matplotlib's formats that every installation has).
+FIGURE_SUFFIXES = (".png", ".pdf", ".svg", ".jpg", ".jpeg", ".eps", ".ps", ".tif", ".tiff", ".webp")
+
+
+def check_figure_path(path: str | Path, *, source: str = "command line", key: str = "--plot") -> Path:
+    """The figure file ``path`` if a figure can be written there.
+
+    Parameters
+    ----------
+    path
+        File to write (its suffix chooses the format).
+    source, key
+        Where the path came from, for the error (e.g. ``"command line"``, ``"--plot"``).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    KegelInputError
+        ``path`` is an existing folder, its suffix is not one of :data:`FIGURE_SUFFIXES`, or its
+        folder does not exist.
+    """
+    from .errors import KegelInputError
+
+    p = Path(path)
+    names = ", ".join(FIGURE_SUFFIXES)
+    if p.is_dir():
+        raise KegelInputError(source, key, str(path), f"a figure file name ending in {names}, not a folder "
+                              f"(e.g. {p / 'losses.png'})")
+    if p.suffix.lower() not in FIGURE_SUFFIXES:
+        raise KegelInputError(source, key, str(path), f"a figure file name ending in {names} "
+                              f"(e.g. {p.with_suffix('.png') if p.name else 'losses.png'})")
+    if not p.parent.is_dir():
+        raise KegelInputError(source, key, str(path), f"a file in an existing folder ({p.parent} does not exist)")
+    return p
 
 
 def save_figure(fig: "Figure", path: str | Path, dpi: int = 110) -> str:

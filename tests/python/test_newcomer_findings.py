@@ -120,3 +120,23 @@ def test_validate_prints_each_warning_once_and_names_its_plots(tmp_path):
     for stem in ("skf_32216_table1", "skf_32216_table2", "skf_32216_table3", "aihara_32216_table1"):
         assert f"validation_{stem}.png" in pngs
         assert str(out_dir / f"validation_{stem}.png") in out
+
+
+# --- Finding: `--plot` to a folder or an unknown suffix gives a matplotlib traceback -------------
+
+
+@pytest.mark.parametrize("target", ["folder", "losses.xyz", "losses", "missing/losses.png"])
+def test_losses_plot_to_a_folder_or_unknown_suffix_is_one_line_naming_the_option(tmp_path, target):
+    path = tmp_path if target == "folder" else tmp_path / target
+    code, out, err = call_kegel("losses", "--bearing", "32208", "--plot", str(path))
+    assert code == 2
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert "--plot" in err and str(path) in err
+    assert (".png" in err) if target != "missing/losses.png" else ("does not exist" in err)
+    assert not list(tmp_path.rglob("*.*"))  # nothing written
+
+
+def test_losses_plot_accepts_a_known_suffix_in_any_case(tmp_path):
+    code, out, err = call_kegel("losses", "--bearing", "32208", "--plot", str(tmp_path / "l.PDF"))
+    assert code == 0, err
+    assert (tmp_path / "l.PDF").stat().st_size > 0
