@@ -197,8 +197,8 @@ class DynamicResult:
         return float(np.trapezoid(np.abs(w), self.time_s) / (2 * math.pi)) if len(w) > 1 else 0.0
 
     def __repr__(self) -> str:
-        """One line: simulated time, outputs, steady-state means, finished (never the arrays,
-        which ``time_s``, ``series`` and ``states`` hold)."""
+        """One line: simulated time, outputs, steady-state means, whether and where the run settled,
+        finished (never the arrays, which ``time_s``, ``series`` and ``states`` hold)."""
         t = np.asarray(self.time_s, dtype=float)
         parts = [f"{(t[-1] - t[0]) * 1e3:.4g} ms simulated" if t.size > 1 else "no time simulated",
                  f"{t.size} outputs"]
@@ -210,6 +210,9 @@ class DynamicResult:
             if "outer_ring_torque_Nm" in st:
                 torque += f" (outer ring {st['outer_ring_torque_Nm']:.4g} N m)"
             parts.append(torque)
+        if "settled" in st:
+            parts.append(f"settled over {st['window_start_s'] * 1e3:.4g}-{st['window_end_s'] * 1e3:.4g} ms"
+                         if st["settled"] else "NOT settled (means over the last part, not a steady answer)")
         if self.finished:
             parts.append("finished")
         else:
