@@ -36,13 +36,20 @@ def read_toml(path: Path) -> dict[str, Any]:
     if st.st_size > MAX_INPUT_BYTES:
         raise KegelInputError(path, "", f"{st.st_size} bytes", f"a TOML file of at most {MAX_INPUT_BYTES} bytes")
     try:
-        text = path.read_text(encoding="utf-8")
+        # utf-8-sig: a byte order mark (U+FEFF, written by some Windows editors) is no TOML
+        # statement; it is dropped, as the TOML spec's UTF-8 allows the editor to add it
+        text = path.read_text(encoding="utf-8-sig")
     except FileNotFoundError:
         raise KegelInputError(path, "", str(path), "an existing TOML file") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise KegelInputError(path, "", str(path), f"a readable UTF-8 TOML file ({exc})") from None
     try:
         return tomllib.loads(text)
+    except RecursionError:
+        # tomllib parses nested arrays and inline tables recursively: a file nested thousands
+        # deep exhausts Python's stack (no input of kegel nests more than three deep)
+        raise KegelInputError(path, "", "(file)", "well-formed TOML with arrays and inline tables nested at most "
+                              "a few levels deep (this file nests them too deep to read)") from None
     except tomllib.TOMLDecodeError as exc:
         line = getattr(exc, "lineno", None)
         col = getattr(exc, "colno", None)

@@ -545,6 +545,9 @@ def apply_overrides(raw: dict[str, Any], overrides: list[str] | tuple[str, ...])
             value: Any = tomllib.loads(f"v = {text}")["v"]
         except tomllib.TOMLDecodeError:
             value = text.strip("'\"")
+        except RecursionError:  # tomllib recurses per nested array: thousands exhaust the stack
+            raise KegelInputError("--set", key, text[:40] + ("..." if len(text) > 40 else ""),
+                                  "a value with arrays nested at most a few levels deep") from None
         _set_dotted(out, key, value)
         keys.add(key)
     return out, keys

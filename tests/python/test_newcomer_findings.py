@@ -140,3 +140,41 @@ def test_losses_plot_accepts_a_known_suffix_in_any_case(tmp_path):
     code, out, err = call_kegel("losses", "--bearing", "32208", "--plot", str(tmp_path / "l.PDF"))
     assert code == 0, err
     assert (tmp_path / "l.PDF").stat().st_size > 0
+
+
+# --- Finding: a scene with a UTF-8 BOM gives "Invalid statement" at 1:1 --------------------------
+
+
+def test_a_scene_with_a_utf8_byte_order_mark_is_read(tmp_path):
+    plain = tmp_path / "plain.toml"
+    plain.write_text(scene_text())
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf" + plain.read_bytes())
+    code, out, err = call_kegel("check", str(bom))
+    assert code == 0, err
+    assert "valid scene" in out and "32216" in out
+    from kegel.scene import load_scene
+
+    a, b = load_scene(plain), load_scene(bom)
+    assert [op.speed_rpm for op in a.operating_points] == [op.speed_rpm for op in b.operating_points]
+
+
+# --- Finding: 50 000 nested arrays give a RecursionError traceback ------------------------------
+
+
+def test_deeply_nested_arrays_are_one_line_errors(tmp_path):
+    deep = "[" * 50_000 + "]" * 50_000
+    path = tmp_path / "deep.toml"
+    path.write_text(scene_text().replace('temperature = "50 degC"', f'temperature = "50 degC"\nextra = {deep}'))
+    code, out, err = call_kegel("check", str(path))
+    assert code == 2
+    assert err.count("\n") == 1 and "Recursion" not in err and str(path) in err and "nested" in err
+    deep_table = "{a = " * 50_000 + "1" + "}" * 50_000
+    path.write_text(scene_text().replace('temperature = "50 degC"', f'temperature = "50 degC"\nextra = {deep_table}'))
+    code, out, err = call_kegel("check", str(path))
+    assert code == 2 and err.count("\n") == 1 and "nested" in err
+    plain = tmp_path / "plain.toml"
+    plain.write_text(scene_text())
+    code, out, err = call_kegel("check", str(plain), "--set", f"operating.speed={deep}")
+    assert code == 2
+    assert err.count("\n") == 1 and "--set" in err and "operating.speed" in err and "nested" in err
