@@ -27,8 +27,13 @@ from .tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
 Q = _core.quasi_static
 
-__all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "bearing_friction", "bearing_model",
+__all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "MAX_SLICES", "bearing_friction", "bearing_model",
            "load_distribution", "plausibility_failures"]
+
+
+#: Most slices per roller/raceway contact: the C++ line contact's limit
+#: (mbs_core/src/line_contact.cpp, LineContactModel); the scene's ``model.slices`` uses it too.
+MAX_SLICES = 400
 
 
 def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, *, slices: int = 30,
@@ -36,8 +41,8 @@ def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialDa
     """The C++ bearing model of a bearing's derived geometry."""
     if method not in ("alternative_slicing", "independent"):
         raise KegelInputError("<argument>", "method", method, "'alternative_slicing' or 'independent'")
-    if not (isinstance(slices, int) and 2 <= slices <= 400):
-        raise KegelInputError("<argument>", "slices", slices, "an integer in [2, 400]")
+    if not (isinstance(slices, int) and 2 <= slices <= MAX_SLICES):
+        raise KegelInputError("<argument>", "slices", slices, f"an integer in [2, {MAX_SLICES}]")
     v = Q.BearingModelValues()
     v.roller_count = g.roller_count
     v.pitch_radius_m = 0.5 * g.pitch_diameter_m

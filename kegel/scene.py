@@ -93,6 +93,7 @@ from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene,
 from .errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
+from .quasi_static import MAX_SLICES
 from .supply import SUPPLY_MODELS
 from .tribology import ROLLING_THERMAL_MODELS
 from .units import RPM_TO_RAD_S, parse_quantity
@@ -674,7 +675,7 @@ def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> 
     for key in ("slices", "rib_cells"):
         if key in model:
             v = model[key]
-            lo, hi = (2, 1000) if key == "slices" else (4, 512)
+            lo, hi = (2, MAX_SLICES) if key == "slices" else (4, 512)  # run's limits: one check
             if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
                 raise reader.error(f"model.{key}", v, f"an integer in [{lo}, {hi}]")
             opts[key] = v

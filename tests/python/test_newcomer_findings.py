@@ -178,3 +178,20 @@ def test_deeply_nested_arrays_are_one_line_errors(tmp_path):
     code, out, err = call_kegel("check", str(plain), "--set", f"operating.speed={deep}")
     assert code == 2
     assert err.count("\n") == 1 and "--set" in err and "operating.speed" in err and "nested" in err
+
+
+# --- Finding: `check` accepts `slices = 1000`, which `run` refuses -------------------------------
+
+
+@pytest.mark.parametrize("slices", [1000, 401, 1, 2, 400])
+def test_check_refuses_what_run_refuses_slices(tmp_path, slices):
+    """`kegel check` and `kegel run` agree on model.slices: both refuse it or both accept it."""
+    path = tmp_path / "s.toml"
+    path.write_text(scene_text(model=f"slices = {slices}").replace('"32216"', '"32208"'))
+    c_code, _, c_err = call_kegel("check", str(path))
+    r_code, _, r_err = call_kegel("run", str(path), "--output", str(tmp_path / "o"))
+    assert (c_code == 0) == (r_code == 0), (c_err, r_err)
+    if slices in (1000, 401, 1):
+        assert c_code == 2 and "model.slices" in c_err and "[2, 400]" in c_err
+    else:
+        assert c_code == 0 and r_code == 0
