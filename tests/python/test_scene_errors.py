@@ -132,7 +132,7 @@ def test_unknown_choice(write_scene):
 
 def test_bad_fidelity_option(write_scene):
     p = write_scene(replace={'fidelity = "default"': 'fidelity = "default"\nslices = 1'})
-    expect_error(p, "model.slices", "an integer in [2, 1000]")
+    expect_error(p, "model.slices", "an integer in [2, 400]")
 
 
 def test_hydraulic_loss_without_oil_bath(write_scene):
