@@ -69,6 +69,19 @@ def _print_table(headers: Sequence[str], rows: Sequence[Sequence[Any]], out=None
         print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(r, widths))).rstrip(), file=out)
 
 
+_BIDI_CONTROLS = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
+
+def printable(text: str) -> str:
+    """``text`` safe for a terminal: control characters (escape sequences, carriage returns, C1
+    controls) and bidirectional overrides written as Python escapes (``\\x1b``), the rest kept
+    (scene names and descriptions come from files a user may not have written)."""
+    import unicodedata
+
+    return "".join(ch.encode("unicode_escape").decode("ascii")
+                   if unicodedata.category(ch) == "Cc" or ch in _BIDI_CONTROLS else ch for ch in str(text))
+
+
 def _json_out(data: Any) -> None:
     json.dump(data, sys.stdout, indent=2, allow_nan=False)
     sys.stdout.write("\n")
@@ -497,7 +510,7 @@ def _cmd_list(args: argparse.Namespace) -> int:
         for r in rows:
             text = r.get("title", "")
             text = f"{text}: {r['description']}" if text and r.get("description") else (text or r.get("description", ""))
-            print(f"  {r['name']:<34} {text}".rstrip())
+            print(printable(f"  {r['name']:<34} {text}".rstrip()))
     return 0
 
 
@@ -523,7 +536,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
                    "operating_point_count": len(scene.operating_points), "swept": list(scene.swept),
                    "fidelity": summary["fidelity"]})
         return 0
-    print(f"{args.scene}: valid scene '{scene.name}': bearing {scene.bearing.designation}, "
+    print(f"{printable(args.scene)}: valid scene '{printable(scene.name)}': bearing {scene.bearing.designation}, "
           f"lubricant {scene.lubricant.name}, {len(scene.operating_points)} operating point(s)"
           + (f" sweeping {', '.join(scene.swept)}" if scene.swept else "")
           + f", fidelity {scene.fidelity.name}")
@@ -557,9 +570,9 @@ def _cmd_run(args: argparse.Namespace) -> int:
         return _run_status(result.points)
     g = scene.geometry
     f = scene.fidelity
-    print(f"Scene '{scene.title}' ({scene.source})")
+    print(f"Scene '{printable(scene.title)}' ({printable(scene.source)})")
     if scene.description:
-        print(f"  {scene.description}" + (" (as written in the scene file, before --set)" if scene.overridden else ""))
+        print(f"  {printable(scene.description)}" + (" (as written in the scene file, before --set)" if scene.overridden else ""))
     print(f"  bearing {g.designation} (Z = {g.roller_count}, contact angle {math.degrees(g.cup_angle_rad):.2f} deg), "
           f"lubricant {scene.lubricant.name}, {scene.lubrication_label}"
           + (f" at {scene.lubrication.oil_level_m * 1e3:.1f} mm" if scene.lubrication.oil_level_m else ""))
@@ -833,7 +846,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         with warnings_once_per_command():
             return args.func(args)
     except KegelInputError as exc:
-        print(f"kegel: error: {exc}", file=sys.stderr)
+        print(f"kegel: error: {printable(str(exc))}", file=sys.stderr)
         return 2
     except KeyboardInterrupt as exc:
         signum = getattr(exc, "signum", 2)  # kegel.io.Terminated: SIGTERM, SIGHUP

@@ -195,3 +195,24 @@ def test_check_refuses_what_run_refuses_slices(tmp_path, slices):
         assert c_code == 2 and "model.slices" in c_err and "[2, 400]" in c_err
     else:
         assert c_code == 0 and r_code == 0
+
+
+# --- Finding: terminal escape codes in a scene name reach the terminal raw -----------------------
+
+
+def test_control_characters_of_a_scene_name_are_escaped_when_printed(tmp_path):
+    path = tmp_path / "evil.toml"
+    path.write_text('[scene]\nname = "evil\\u001b[31mRED\\u001b]0;title\\u0007"\n'
+                    'description = "one\\rtwo \\u202e three"\n' + scene_text().replace('"32216"', '"32208"'))
+    for argv in (("check", str(path)), ("run", str(path), "--output", str(tmp_path / "o"))):
+        code, out, err = call_kegel(*argv)
+        assert code == 0, err
+        for ch in ("\x1b", "\x07", "\r", "\u202e"):
+            assert ch not in out and ch not in err
+        assert "evil\\x1b[31mRED\\x1b]0;title\\x07" in out
+    assert "one\\rtwo \\u202e three" in out
+    # an error naming such a file name escapes it too
+    bad = tmp_path / "bad\x1b[2J.toml"
+    bad.write_text("[bearing\n")
+    code, out, err = call_kegel("check", str(bad))
+    assert code == 2 and "\x1b" not in err and "bad\\x1b[2J.toml" in err
