@@ -101,10 +101,18 @@ def hydraulic_torques(
     Raises
     ------
     ValueError
-        Unknown correlation or an oil level outside [0, D].
+        Unknown correlation, an oil level outside [0, D] or a speed beyond the scenes' limit
+        n d_m (:class:`kegel.KegelInputError`).
     """
     if correlation not in CORRELATIONS:
         raise ValueError(f"correlation = {correlation!r}: expected one of {', '.join(CORRELATIONS)}")
+    # the scenes' speed limit n d_m (0 allowed: a dynamic run starts from rest)
+    from ..errors import KegelInputError
+    from ..scene import _speed_limit_text, max_speed_rpm
+
+    if not (math.isfinite(shaft_speed_rad_s) and abs(shaft_speed_rad_s) * 30.0 / math.pi <= max_speed_rpm(geometry)):
+        raise KegelInputError("<argument>", "shaft_speed_rad_s", shaft_speed_rad_s,
+                              f"a speed with {_speed_limit_text(geometry)}")
     D = geometry.outer_diameter_m
     if not 0.0 <= oil_level_m <= D:
         raise ValueError(f"oil_level_m = {oil_level_m}: expected a level in [0, D] = [0, {D}] m")

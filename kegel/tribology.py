@@ -176,6 +176,11 @@ def axial_roller_loads(g: BearingGeometry, axial_load_N: float) -> dict[str, flo
     ``Q_i = (Q_o cos(alpha_o) + Q_rib sin(phi_rib)) / cos(alpha_i)``, ``phi_rib`` the angle of
     the rib normal to the bearing axis.
     """
+    from .scene import operating_range_error  # the scenes' axial-load range
+
+    expected = operating_range_error("axial_load", axial_load_N, g)
+    if expected is not None:
+        raise KegelInputError("<argument>", "axial_load_N", axial_load_N, expected)
     a_o, a_i = g.cup_angle_rad, g.cone_angle_rad
     phi = g.rib_face_angle_to_radial_plane_rad
     q_o = axial_load_N / (g.roller_count * math.sin(a_o))

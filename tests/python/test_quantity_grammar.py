@@ -459,3 +459,21 @@ def test_evaluate_raceway_contact_checks_the_scenes_ranges(parts):
         with pytest.raises(KegelInputError) as info:
             kegel.evaluate_raceway_contact(g, b, m, lub, fr, **args)
         assert info.value.key == key
+
+
+def test_axial_roller_loads_and_hydraulic_torques_check_the_scenes_ranges(parts):
+    """axial_roller_loads(-6 kN) gave negative roller loads; hydraulic_torques at 1e9 rad/s gave
+    1.4e8 N m."""
+    from kegel.correlations import hydraulic_torques
+    from kegel.tribology import axial_roller_loads
+
+    g, b, m, lub, fr = parts
+    with pytest.raises(KegelInputError, match="positive axial load") as info:
+        axial_roller_loads(g, -6000.0)
+    assert info.value.key == "axial_load_N"
+    state = kegel.lubricant_state(lub, 323.15)
+    with pytest.raises(KegelInputError, match="9217 rpm") as info:
+        hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=1e9, oil_level_m=0.07)
+    assert info.value.key == "shaft_speed_rad_s"
+    # a start from rest stays allowed (dynamic runs evaluate the loss along their speed profile)
+    assert hydraulic_torques("liebrecht", g, state, shaft_speed_rad_s=0.0, oil_level_m=0.07).total_Nm == 0.0
