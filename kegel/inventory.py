@@ -31,12 +31,21 @@ EXAMPLES_DIR = Path(__file__).resolve().parents[1] / "examples"
 
 
 def _first_comment(path: Path) -> str:
-    """The first comment line of a TOML file, without '#'."""
-    for line in path.read_text().splitlines():
+    """The first sentence of a TOML file's first comment paragraph, without '#' (the paragraph's
+    lines joined: a sentence that runs over several comment lines is given whole)."""
+    import re
+
+    words: list[str] = []
+    for line in path.read_text(encoding="utf-8-sig").splitlines():
         s = line.strip()
-        if s.startswith("#") and s.lstrip("#").strip():
-            return s.lstrip("#").strip()
-    return ""
+        text = s.lstrip("#").strip() if s.startswith("#") else None
+        if text:
+            words.append(text)
+        elif words:  # a blank comment line, a blank line or a statement ends the paragraph
+            break
+    paragraph = " ".join(words)
+    # a sentence ends at . ! or ? followed by a capital letter (not "et al., Lubricants")
+    return re.split(r"(?<=[.!?])\s+(?=[A-Z])", paragraph, maxsplit=1)[0]
 
 
 def inventory(kind: str) -> list[dict[str, Any]]:
@@ -82,15 +91,21 @@ def inventory(kind: str) -> list[dict[str, Any]]:
 def scene_template(bearing: str = "32216", lubricant: str = "FVA3", name: str = "my scene") -> str:
     """A commented scene file that ``kegel check`` accepts: one bearing under an axial load, a speed
     sweep at one temperature in an oil bath, with every optional section shown commented out."""
-    load_bearing(bearing, source="command line", key="--bearing")  # a clear error before writing
-    load_lubricant(lubricant, source="command line", key="--lubricant")
+    b = load_bearing(bearing, source="command line", key="--bearing")  # a clear error before writing
+    lub = load_lubricant(lubricant, source="command line", key="--lubricant")
+    # the values the template writes, and the description made of them (one source: the
+    # description says what the file holds)
+    axial, radial, speed_from, speed_to, points = "6 kN", "0 kN", "500 rpm", "4000 rpm", 8
+    temperature, level = "50 degC", "half_roller"
+    description = (f"{b.designation}, {lub.name}: Fa = {axial}, Fr = {radial}, {speed_from.split()[0]}-{speed_to} "
+                   f"({points} speeds), {temperature}, oil bath at {level.replace('_', ' ')} height")
     return f'''# A kegel scene: one bearing, one oil, the operating points and the model fidelity.
 # Check it with `kegel check FILE`, run it with `kegel run FILE`; every key is described in
 # docs/scenes.md. Quantities are strings with their unit ("6 kN", "2000 rpm", "50 degC").
 
 [scene]
 name = "{name}"
-description = "Fa = 6 kN, 500-4000 rpm, 50 degC, oil bath at half roller height"
+description = "{description}"   # kegel run prints it: keep it in step with the values below
 
 [bearing]
 designation = "{bearing}"        # `kegel list bearings`, or a path to a bearing .toml file
@@ -100,15 +115,15 @@ designation = "{bearing}"        # `kegel list bearings`, or a path to a bearing
 name = "{lubricant}"             # `kegel list lubricants`, or a path to a lubricant .toml file
 
 [operating]
-axial_load = "6 kN"              # or axial_offset = "20 um" (displacement-controlled preload)
-radial_load = "0 kN"             # Fa / Fr must exceed tan(contact angle), else the ring lifts off
-speed = {{ from = "500 rpm", to = "4000 rpm", points = 8 }}   # or one speed, or a list
-temperature = "50 degC"          # bulk oil temperature; a list sweeps it
+axial_load = "{axial}"              # or axial_offset = "20 um" (displacement-controlled preload)
+radial_load = "{radial}"             # Fa / Fr must exceed tan(contact angle), else the ring lifts off
+speed = {{ from = "{speed_from}", to = "{speed_to}", points = {points} }}   # or one speed, or a list
+temperature = "{temperature}"          # bulk oil temperature; a list sweeps it
 # tilt_moment = "20 N m"
 
 [lubrication]
 mode = "oil_bath"                # or "minimum_quantity" (no hydraulic loss)
-oil_level = "half_roller"        # none, half_roller, shaft_center, flooded or a length
+oil_level = "{level}"        # none, half_roller, shaft_center, flooded or a length
 
 [model]
 fidelity = "default"             # fast, default, fine or auto (with tolerance = "1 %")

@@ -216,3 +216,43 @@ def test_control_characters_of_a_scene_name_are_escaped_when_printed(tmp_path):
     bad.write_text("[bearing\n")
     code, out, err = call_kegel("check", str(bad))
     assert code == 2 and "\x1b" not in err and "bad\\x1b[2J.toml" in err
+
+
+# --- Finding: `kegel list` cuts descriptions mid-sentence ---------------------------------------
+
+
+def test_list_gives_whole_sentences():
+    """Every description `kegel list` prints ends a sentence or is a data line (bearings,
+    materials): none stops mid-sentence as the first comment line of a file did."""
+    from kegel.inventory import KINDS, inventory
+
+    for kind in KINDS:
+        for row in inventory(kind):
+            text = row.get("description", "")
+            if kind in ("friction", "validation"):
+                assert text.endswith((".", ")")), (kind, row["name"], text)
+    friction = {r["name"]: r["description"] for r in inventory("friction")}
+    assert friction["steel_mineral_oil"].endswith("without additives (FVA 3).")
+    code, out, err = call_kegel("list", "validation")
+    assert code == 0 and "under pure axial load: Figure 5 of the seed paper" in out
+
+
+# --- Finding: `kegel init`'s description does not follow the values it describes ----------------
+
+
+@pytest.mark.parametrize("bearing", ["32208", "32216"])
+def test_init_description_says_what_the_scene_holds(tmp_path, bearing):
+    from kegel.scene import load_scene
+
+    path = tmp_path / "mine.toml"
+    code, out, err = call_kegel("init", str(path), "--bearing", bearing)
+    assert code == 0, err
+    scene = load_scene(path)
+    d = scene.description
+    speeds = [op.speed_rpm for op in scene.operating_points]
+    op = scene.operating_points[0]
+    assert d.startswith(f"{scene.bearing.designation}, {scene.lubricant.name}:")
+    assert f"Fa = {op.axial_load_N / 1e3:g} kN" in d and f"Fr = {op.radial_load_N / 1e3:g} kN" in d
+    assert f"{min(speeds):g}-{max(speeds):g} rpm ({len(speeds)} speeds)" in d
+    assert f"{op.temperature_degC:g} degC" in d
+    assert scene.lubrication.mode == "oil_bath" and "oil bath at half roller height" in d
