@@ -87,6 +87,9 @@ def _json_out(data: Any) -> None:
     sys.stdout.write("\n")
 
 
+#: Most speeds of `kegel losses --points` (1000 take about a second and print 3000 rows).
+MAX_LOSS_POINTS = 1000
+
 TORQUE_SPLIT_NOTE = ("sliding + rolling = M_fric (split by mechanism); of which rib: the roller end / rib "
                      "contact's share of M_fric (split by contact), already inside sliding and rolling")
 
@@ -221,8 +224,11 @@ def _cmd_losses(args: argparse.Namespace) -> int:
     if args.points is not None and args.speed:
         raise KegelInputError(src, "--points", args.points, "--points only with --speed-range (or the default range)")
     points = 8 if args.points is None else args.points
-    if points < 1:
-        raise KegelInputError(src, "--points", points, "at least one point")
+    if not 1 <= points <= MAX_LOSS_POINTS:
+        # each speed is a table row per oil level (and per correlation): a million took minutes
+        # and 5 GB before printing anything
+        raise KegelInputError(src, "--points", points, f"an integer in [1, {MAX_LOSS_POINTS}] (each speed is a "
+                              "printed row per oil level; for more, call kegel.correlations.hydraulic_torques)")
     key = "--speed" if args.speed else "--speed-range"
     speeds_text = args.speed or args.speed_range or ["500 rpm", "4000 rpm"]
     values = [check_speed(parse_quantity(t, "speed", source=src, key=key), bearing, source=src, key=key, text=t)
@@ -784,7 +790,8 @@ def _parser() -> argparse.ArgumentParser:
                     help='a shaft speed, e.g. "2000 rpm" (repeatable: a list, as in `kegel cfd sweep`)')
     lo.add_argument("--speed-range", nargs=2, metavar=("FROM", "TO"),
                     help='a speed range, e.g. --speed-range "500 rpm" "4000 rpm" (the default) with --points')
-    lo.add_argument("--points", type=int, help="speeds in --speed-range, ends included (default 8)")
+    lo.add_argument("--points", type=int, help=f"speeds in --speed-range, ends included (default 8, at most "
+                                               f"{MAX_LOSS_POINTS})")
     lo.add_argument("--oil-level", action="append", metavar="LEVEL",
                     help="none, half_roller, shaft_center, flooded or a length (repeatable)")
     lo.add_argument("--plot", metavar="PNG", help="write torque vs speed and components to this file")

@@ -256,3 +256,24 @@ def test_init_description_says_what_the_scene_holds(tmp_path, bearing):
     assert f"{min(speeds):g}-{max(speeds):g} rpm ({len(speeds)} speeds)" in d
     assert f"{op.temperature_degC:g} degC" in d
     assert scene.lubrication.mode == "oil_bath" and "oil bath at half roller height" in d
+
+
+# --- Finding: `kegel losses --points 1000000` runs for minutes with 5 GB and no progress ---------
+
+
+def test_losses_refuses_a_million_points_at_once():
+    import time
+
+    from kegel.cli import MAX_LOSS_POINTS
+
+    t0 = time.perf_counter()
+    code, out, err = call_kegel("losses", "--bearing", "32208", "--points", "1000000")
+    assert time.perf_counter() - t0 < 30
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "--points" in err and "1000000" in err and f"[1, {MAX_LOSS_POINTS}]" in err
+    code, out, err = call_kegel("losses", "--bearing", "32208", "--points", str(MAX_LOSS_POINTS),
+                                "--oil-level", "flooded", "--format", "json")
+    assert code == 0, err
+    import json
+
+    assert len([r for r in json.loads(out)["points"] if r["correlation"] == "liebrecht"]) == MAX_LOSS_POINTS
