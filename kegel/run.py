@@ -176,24 +176,29 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
         if n_proc > 1 or client is not None:
             finished: dict[int, dict[str, Any]] = {}
             # the workers are stopped on any exception here (contextlib.closing)
+
+            def release() -> None:  # the points finished so far, in the scene's order (on_point too)
+                while len(points) < len(scene.operating_points):
+                    op = scene.operating_points[len(points)]
+                    label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
+                    if op.index in done:
+                        points.append(done[op.index])
+                        warn_log.add(op.index, [Warning_(**w) for w in done[op.index].get("warnings", ())])
+                        bar.update(len(points), label + " (resumed)")
+                        continue
+                    if op.index not in finished:
+                        break
+                    points.append(finished.pop(op.index))
+                    if on_point:
+                        on_point(points[-1])
+                    bar.update(len(points), label)
+
+            release()
             with contextlib.closing(solve_blocks(scene, fid, pending, work, uncertainty, jobs=n_proc,
                                                  client=client)) as solved:
                 for idx, point in solved:
                     finished[idx] = finish_point(point)
-                    while len(points) < len(scene.operating_points):  # on_point in the scene's order
-                        op = scene.operating_points[len(points)]
-                        label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
-                        if op.index in done:
-                            points.append(done[op.index])
-                            warn_log.add(op.index, [Warning_(**w) for w in done[op.index].get("warnings", ())])
-                            bar.update(len(points), label + " (resumed)")
-                            continue
-                        if op.index not in finished:
-                            break
-                        points.append(finished.pop(op.index))
-                        if on_point:
-                            on_point(points[-1])
-                        bar.update(len(points), label)
+                    release()
         starts = {blk[0] for blk in blocks}
         for op in scene.operating_points[len(points):]:
             label = f"n = {op.speed_rpm:.0f} rpm, T = {op.temperature_degC:.0f} degC"
