@@ -17,7 +17,7 @@ from .data import LubricantData, cragoe_specific_heat_J_kgK, load_lubricant
 from .errors import KegelInputError
 from .units import parse_quantity
 
-__all__ = ["LubricantState", "lubricant_state"]
+__all__ = ["LubricantState", "lubricant_state", "temperature_domain_degC"]
 
 
 @dataclass(frozen=True)
@@ -42,6 +42,46 @@ class LubricantState:
 #: Temperature range accepted for lubricant data [degC], at every entry point (scene files, the
 #: command line, the CFD runner and the Python API all evaluate the oil through lubricant_state).
 TEMPERATURE_RANGE_DEGC = (-20.0, 150.0)
+
+
+def temperature_domain_degC(lub: LubricantData) -> tuple[float, float, str]:
+    """The temperatures [degC] at which kegel can evaluate a lubricant, and why the lower end.
+
+    Kegel's range :data:`TEMPERATURE_RANGE_DEGC` narrowed to the domain of Dicke's
+    pressure-viscosity law (seed paper, Wingertszahn et al. 2023, Eq. 7),
+    ``eta = eta0 exp(p / (a1 + a2 theta + (b1 + b2 theta) p))``: its denominator must stay
+    positive at every pressure, so ``a1 + a2 theta > 0`` and ``b1 + b2 theta >= 0``. Below
+    ``theta = -b1 / b2`` (FVA 3, Table A1: -4.419e-3 / 3.0115e-4 = -14.67 degC) the viscosity
+    becomes infinite at the finite pressure ``p = (a1 + a2 theta) / -(b1 + b2 theta)``: the fit
+    has no meaning there, and kegel has no other pressure-viscosity law for a cold start.
+
+    Returns
+    -------
+    tuple[float, float, str]
+        Lowest and highest temperature [degC], and the reason for the lowest in words (empty
+        when it is kegel's own range).
+    """
+    lo, hi = TEMPERATURE_RANGE_DEGC
+    why = ""
+    p = lub.parameters
+    a1, a2, b1, b2 = p.dicke_a1_bar, p.dicke_a2_bar_per_K, p.dicke_b1, p.dicke_b2_per_K
+    if b2 > 0.0 and -b1 / b2 > lo:
+        lo = -b1 / b2
+        why = (f"below {lo:.2f} degC Dicke's pressure-viscosity law (seed paper Eq. 7, {lub.name}'s coefficients "
+               f"b1 = {b1:g}, b2 = {b2:g} 1/degC) has b1 + b2 theta < 0: its viscosity becomes infinite at a finite "
+               f"pressure (p = (a1 + a2 theta) / -(b1 + b2 theta))")
+    if a2 > 0.0 and -a1 / a2 > lo:
+        lo = -a1 / a2
+        why = (f"below {lo:.2f} degC Dicke's pressure-viscosity law (seed paper Eq. 7) has a1 + a2 theta <= 0")
+    return lo, hi, why
+
+
+def _infinite_at_GPa(lub: LubricantData, theta_degC: float) -> float | None:
+    """The pressure [GPa] at which Dicke's Eq. 7 is singular at ``theta_degC`` (None if never)."""
+    p = lub.parameters
+    a = p.dicke_a1_bar + p.dicke_a2_bar_per_K * theta_degC
+    b = p.dicke_b1 + p.dicke_b2_per_K * theta_degC
+    return a / -b * 1e5 / 1e9 if b < 0.0 < a else None
 
 
 def lubricant_state(lub: LubricantData | str | os.PathLike, temperature_K: float | str, *, source: str = "<argument>",
@@ -75,6 +115,15 @@ def lubricant_state(lub: LubricantData | str | os.PathLike, temperature_K: float
     if not lo <= temperature_K - 273.15 <= hi:
         raise KegelInputError(source, key, f"{temperature_K - 273.15:g} degC",
                               f"a temperature in [{lo:g}, {hi:g}] degC (the range of kegel's lubricant data)")
+    d_lo, d_hi, why = temperature_domain_degC(lub)
+    theta = temperature_K - 273.15
+    if theta < d_lo:
+        p_inf = _infinite_at_GPa(lub, theta)
+        at = f" (at {theta:g} degC: {p_inf:.3g} GPa)" if p_inf is not None else ""
+        raise KegelInputError(source, key, f"{theta:g} degC",
+                              f"a temperature in [{d_lo:.2f}, {d_hi:g}] degC for lubricant {lub.name}: {why}{at}; "
+                              "kegel has no cold-start pressure-viscosity law (a lubricant file whose Dicke "
+                              "coefficients were fitted down to this temperature extends the range)")
     try:
         eta = _core.viscosity_ambient_Pas(core, temperature_K)
         # the contact models' pressure-viscosity law (Eq. 7) must stay finite at this temperature

@@ -10,7 +10,7 @@ import pytest
 from conftest import EXAMPLES, REPO, call_kegel, run_kegel, scene_text
 
 import kegel
-from kegel.data import load_bearing, load_material
+from kegel.data import load_bearing, load_lubricant, load_material
 from kegel.geometry import derive_geometry
 
 
@@ -277,3 +277,28 @@ def test_losses_refuses_a_million_points_at_once():
     import json
 
     assert len([r for r in json.loads(out)["points"] if r["correlation"] == "liebrecht"]) == MAX_LOSS_POINTS
+
+
+# --- Finding: -20 degC is refused (the FVA 3 pressure-viscosity formula's domain): no cold start ---
+
+
+def test_cold_start_error_states_the_covered_range_and_why(tmp_path):
+    """FVA 3 (seed paper Table A1): b1 + b2 theta = 0 at theta = -4.419e-3 / 3.0115e-4 =
+    -14.674 degC; at -20 degC Eq. 7's denominator 268.07 bar - 1.604e-3 p vanishes at
+    p = 167 100 bar = 16.7 GPa (hand calculation)."""
+    from kegel.errors import KegelInputError
+    from kegel.lubricant import lubricant_state, temperature_domain_degC
+
+    lo, hi, why = temperature_domain_degC(load_lubricant("FVA3"))
+    assert lo == pytest.approx(-4.419e-3 / 3.0115e-4, rel=1e-12) == pytest.approx(-14.674, abs=1e-3)
+    assert hi == 150.0 and "Eq. 7" in why
+    assert lubricant_state("FVA3", "-14.6 degC").dynamic_viscosity_Pas > 1.0
+    with pytest.raises(KegelInputError) as exc:
+        lubricant_state("FVA3", "-20 degC")
+    text = str(exc.value)
+    assert "[-14.67, 150] degC" in text and "Eq. 7" in text and "16.7 GPa" in text
+    # the same line from `kegel check` on a scene at -20 degC
+    path = tmp_path / "cold.toml"
+    path.write_text(scene_text().replace('"50 degC"', '"-20 degC"'))
+    code, out, err = call_kegel("check", str(path))
+    assert code == 2 and err.count("\n") == 1 and "[-14.67, 150] degC" in err and "cold-start" in err
