@@ -218,7 +218,7 @@ def test_lubricant_state_accepts_a_temperature_with_its_unit():
     (dict(), "axial_load"),
     (dict(axial_load="6 kN", lubrication="half full"), "lubrication"),
     (dict(axial_load="6 kN", lubrication="900 mm"), "lubrication"),
-    (dict(axial_load="6 kN", hydraulic="liebrecht"), "hydraulic"),
+    (dict(axial_load="6 kN", lubrication="minimum_quantity", hydraulic="liebrecht"), "hydraulic"),
     (dict(axial_load="6 kN", lubrication="flooded", hydraulic="magic"), "hydraulic"),
 ])
 def test_bad_input_names_the_argument(bearing, kwargs, argument):
