@@ -55,6 +55,7 @@ from .units import KINDS, parse_quantity
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas
+    from matplotlib.figure import Figure
 
     from .geometry import BearingGeometry
     from .scene import Scene
@@ -389,6 +390,14 @@ class FrictionResult:
         return self._breakdown("torque_by_mechanism_Nm")
 
     @property
+    def power_loss_W(self) -> float | np.ndarray:
+        """Power lost in the bearing, ``total_torque_Nm`` times the shaft speed [W] (friction and
+        hydraulic loss; the table of ``kegel run`` prints it as ``P_loss``)."""
+        vals = [abs(p["total_torque_Nm"] * p["speed_rad_s"]) if p.get("total_torque_Nm") is not None else math.nan
+                for p in self.points]
+        return float(vals[0]) if len(vals) == 1 else np.array(vals, dtype=float)
+
+    @property
     def Lambda_min(self) -> float | np.ndarray:
         """Smallest film parameter Lambda over the contacts (< 1: mixed lubrication)."""
         vals = [min((p.get("Lambda_min") or {}).values(), default=math.nan) for p in self.points]
@@ -418,6 +427,57 @@ class FrictionResult:
         if n > _REPR_POINTS:
             lines.append(f"  ... {n - _REPR_POINTS} more (to_dataframe() for every point)")
         return "\n".join(lines)
+
+    def plot(self, path: str | Path | None = None, *, which: str = "torque") -> "Figure | Path":
+        """The plot ``kegel run`` writes for these points: torque against the swept quantity
+        (``which="torque"``), its breakdown by contact and mechanism (``"breakdown"``) or the
+        roller loads and cage slip (``"loads"``); see :func:`kegel.plots.build_figures`.
+
+        Parameters
+        ----------
+        path
+            A figure file to write (``.png``, ``.pdf``, ``.svg``, ...: :data:`kegel.plots.FIGURE_SUFFIXES`);
+            None returns the matplotlib figure instead (for a notebook or further drawing).
+        which
+            ``"torque"``, ``"breakdown"`` or ``"loads"``.
+
+        Returns
+        -------
+        matplotlib.figure.Figure or Path
+            The figure (``path`` None), else the file written.
+
+        Raises
+        ------
+        KegelInputError
+            An unknown ``which``, or a ``path`` that is a folder, has an unknown suffix or lies in a
+            folder that does not exist.
+        """
+        import matplotlib
+
+        if path is not None:
+            matplotlib.use("Agg")  # writing a file needs no window
+        import matplotlib.pyplot as plt
+
+        from .plots import PlotMeta, build_figures, check_figure_path, save_figure
+
+        keys = {"torque": "torque_plot", "breakdown": "breakdown_plot", "loads": "loads_plot"}
+        if which not in keys:
+            raise KegelInputError("FrictionResult.plot", "which", which, "one of " + ", ".join(keys))
+        target = None if path is None else check_figure_path(path, source="FrictionResult.plot", key="path")
+        meta = PlotMeta(title=f"kegel.Bearing({self.designation!r}).friction", bearing=self.designation,
+                        lubricant=self.lubricant, lubrication=self.lubrication,
+                        fidelity=f"{self.fidelity}, quasi_static", swept=list(self.swept) or ["speed"],
+                        hydraulic={"liebrecht": "Liebrecht", "skf": "SKF", "cfd": "CFD"}.get(self.hydraulic_method))
+        figs = build_figures(self.points, meta)
+        fig = figs.pop(keys[which])
+        for other in figs.values():
+            plt.close(other)
+        if target is None:
+            return fig
+        try:
+            return Path(save_figure(fig, target))
+        finally:
+            plt.close(fig)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary: the figures and every point's record (no numpy types; NaN

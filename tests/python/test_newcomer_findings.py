@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
-from conftest import EXAMPLES, REPO, call_kegel, run_kegel, scene_text
+from conftest import EXAMPLES, call_kegel, scene_text
 
 import kegel
 from kegel.data import load_bearing, load_lubricant, load_material
@@ -302,3 +303,28 @@ def test_cold_start_error_states_the_covered_range_and_why(tmp_path):
     path.write_text(scene_text().replace('"50 degC"', '"-20 degC"'))
     code, out, err = call_kegel("check", str(path))
     assert code == 2 and err.count("\n") == 1 and "[-14.67, 150] degC" in err and "cold-start" in err
+
+
+# --- item 4: result.plot() in the API, and the power loss beside the torque --------------------
+
+
+def test_api_result_plot_writes_a_file_or_returns_the_figure_and_gives_the_power_loss(tmp_path):
+    from matplotlib.figure import Figure
+
+    from kegel.errors import KegelInputError
+
+    r = kegel.Bearing("32208", fidelity="fast").friction(speed=["500 rpm", "2000 rpm"], axial_load="1 kN",
+                                                         temperature="50 degC")
+    written = r.plot(tmp_path / "torque.png")
+    assert written == tmp_path / "torque.png" and written.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    fig = r.plot(which="breakdown")
+    assert isinstance(fig, Figure) and "breakdown" in [a.get_label() for a in fig.axes]
+    assert r[1].plot(tmp_path / "one.svg").read_text().lstrip().startswith("<?xml")
+    with pytest.raises(KegelInputError, match="path"):
+        r.plot(tmp_path)  # a folder
+    with pytest.raises(KegelInputError, match="which"):
+        r.plot(which="everything")
+    # power loss: M_total x omega, by hand at each speed
+    omega = np.array([500.0, 2000.0]) * 2 * math.pi / 60
+    assert r.power_loss_W == pytest.approx(r.total_torque_Nm * omega, rel=1e-12)
+    assert r[0].power_loss_W == pytest.approx(float(r.total_torque_Nm[0]) * omega[0], rel=1e-12)
