@@ -121,7 +121,8 @@ def lubricant_state(lub: LubricantData | str | os.PathLike, temperature_K: float
         p_inf = _infinite_at_GPa(lub, theta)
         at = f" (at {theta:g} degC: {p_inf:.3g} GPa)" if p_inf is not None else ""
         raise KegelInputError(source, key, f"{theta:g} degC",
-                              f"a temperature in [{d_lo:.2f}, {d_hi:g}] degC for lubricant {lub.name}: {why}{at}; "
+                              f"a temperature in [{d_lo:.2f}, {d_hi:g}] degC, the domain of lubricant {lub.name}'s "
+                              f"formulas: {why}{at}; "
                               "kegel has no cold-start pressure-viscosity law (a lubricant file whose Dicke "
                               "coefficients were fitted down to this temperature extends the range)")
     try:
