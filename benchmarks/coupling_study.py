@@ -106,7 +106,7 @@ def main(argv: list[str]) -> int:
     from kegel.io import atomic_write_json
     atomic_write_json(out_file, meta)
     print(f"32208, Fa = {args.axial_load}, {args.speed}, 50 degC, {duration_ms:.0f} ms ({args.revolutions:g} cage "
-          f"revolutions), means over the second half\n")
+          f"revolutions), steady means over the dynamic solution's window\n")
     print("| oil level | flow forces | cage slip [%] | friction [mN m] | hydraulic [mN m] (bodies + rings) | "
           "total [mN m] |")
     print("| --- | --- | --- | --- | --- | --- |")
