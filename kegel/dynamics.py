@@ -457,6 +457,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
             raise KegelInputError("<argument>", "axial_N" if not len(load_profile) else "load_profile", (fa, fr),
                                   f"loads whose ISO 76 static equivalent load stays within C0r = "
                                   f"{bearing.C0r_N / 1e3:g} kN")
+    from .scene import check_operating_point  # the scenes' ranges of the loads and the misalignment
+
+    check_operating_point(bearing, g, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
+                          misalignment_rad=misalignment_rad)
     w_start = float(np.interp(0.0, prof[:, 0], prof[:, 1])) if initial_speed_rad_s is None else initial_speed_rad_s
     loads = np.asarray(load_profile, dtype=float).reshape(-1, 3) if len(load_profile) else np.zeros((0, 3))
     if len(loads) and (not np.all(np.diff(loads[:, 0]) > 0) or not np.isfinite(loads).all()
