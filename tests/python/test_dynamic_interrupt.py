@@ -86,7 +86,12 @@ def test_ctrl_c_ends_a_dynamic_run_with_status_130(tmp_path):
     exe = Path(sys.executable).with_name("kegel")
     proc = subprocess.Popen([str(exe), "run", "s.toml", "--output", "out"], cwd=tmp_path,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(3.0)
+    # interrupt the run, not the import: wait for its staging folder (a loaded machine took up to
+    # 10 s to import kegel, and a SIGINT during the import is Python's, not kegel's)
+    deadline = time.monotonic() + 120.0
+    while not any(tmp_path.glob(".*kegel-staging*")) and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.1)
+    time.sleep(1.0)
     assert proc.poll() is None, proc.communicate()  # 2 s of simulated time take minutes
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=60)
