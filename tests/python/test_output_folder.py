@@ -88,7 +88,8 @@ def test_the_previous_results_survive_ctrl_c(tmp_path):
     assert run_kegel("run", TABLE1, *ONE, "--output", str(out)).returncode == 0
     before = _snapshot(out)
     exe = Path(sys.executable).with_name("kegel")
-    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out)], stdout=subprocess.PIPE,
+    # one process: its points reach the stream one by one (parallel chains of 16 reach it whole)
+    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--jobs", "1"], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
     t0 = time.monotonic()
     while _stream_points(tmp_path) < 2 and proc.poll() is None and time.monotonic() - t0 < 120:
@@ -296,7 +297,8 @@ def test_sigterm_during_a_dynamic_run_leaves_no_temporary_file_and_says_what_it_
 def test_sigterm_during_a_sweep_exits_143_and_the_rerun_resumes(tmp_path):
     out = tmp_path / "out"
     exe = Path(sys.executable).with_name("kegel")
-    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out)], stdout=subprocess.PIPE,
+    # one process: its points reach the stream one by one (parallel chains of 16 reach it whole)
+    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--jobs", "1"], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
     t0 = time.monotonic()
     while _stream_points(tmp_path) < 2 and proc.poll() is None and time.monotonic() - t0 < 120:
