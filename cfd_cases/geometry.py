@@ -55,7 +55,7 @@ import numpy as np
 
 from kegel.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO, BearingGeometry
 
-from .mesh import write_msh22
+from .mesh import restore_sigpipe, write_msh22
 
 __all__ = ["MESH_LEVELS", "CfdGeometry", "cfd_geometry", "build_mesh", "roller_name"]
 
@@ -450,6 +450,7 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
         write_msh22(msh_path)
     finally:
         gmsh.finalize()
+        restore_sigpipe()
     types: dict[str, Any] = {name: "wall" for name in patches if not name.startswith("periodic")}
     if cg.sector:
         for name, other in (("periodic_lo", "periodic_hi"), ("periodic_hi", "periodic_lo")):

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from .foam import FoamError, run_utility
 
-__all__ = ["MeshError", "MeshQuality", "write_msh22", "gmsh_to_foam", "set_patch_types", "check_mesh"]
+__all__ = ["MeshError", "MeshQuality", "restore_sigpipe", "write_msh22", "gmsh_to_foam", "set_patch_types", "check_mesh"]
 
 
 class MeshError(FoamError):
@@ -45,6 +45,16 @@ class MeshQuality:
     max_aspect_ratio: float
     ok: bool
     failed: tuple[str, ...]
+
+
+def restore_sigpipe() -> None:
+    """Give SIGPIPE back to Python after gmsh: ``gmsh.initialize`` sets it to the C default
+    (terminate) and ``finalize`` leaves it so; a later write to a closed pipe or socket (a Dask
+    comm, a pager) then killed the whole process without a word instead of raising
+    BrokenPipeError. Python's own setting is to ignore it."""
+    import signal
+
+    signal.signal(signal.SIGPIPE, signal.SIG_IGN)
 
 
 def write_msh22(path: str | Path) -> Path:

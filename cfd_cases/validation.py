@@ -26,7 +26,7 @@ import numpy as np
 
 from .foam import run_solver
 from .forces import read_forces
-from .mesh import check_mesh, gmsh_to_foam, write_msh22
+from .mesh import check_mesh, gmsh_to_foam, restore_sigpipe, write_msh22
 from .template import render_case, render_file
 
 __all__ = ["CouetteResult", "couette_torque_analytic", "taylor_couette", "RotatingTankResult",
@@ -100,6 +100,7 @@ def _annulus_mesh(msh: Path, r1: float, r2: float, height: float, n_radial: int,
         write_msh22(msh)
     finally:
         gmsh.finalize()
+        restore_sigpipe()
 
 
 def taylor_couette(
@@ -202,6 +203,7 @@ def _tank_mesh(msh: Path, radius: float, height: float, n_radial: int, n_layers:
         write_msh22(msh)
     finally:
         gmsh.finalize()
+        restore_sigpipe()
 
 
 def rotating_tank(
@@ -522,6 +524,7 @@ def _eccentric_mesh(msh: Path, r1: float, r2: float, e: float, *, cells_across_g
         write_msh22(msh)
     finally:
         gmsh.finalize()
+        restore_sigpipe()
 
 
 #: Kinematics of the rolling-gap case: surface speed of the outer cylinder over the inner one's.

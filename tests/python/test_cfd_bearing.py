@@ -439,3 +439,19 @@ def test_sweep_writes_table_and_plot(tmp_path):
     torques = [float(r.split(",")[2]) for r in rows[1:]]
     assert 0 < torques[0] < torques[1]  # more loss at the higher speed
     assert (tmp_path / "sweep.png").stat().st_size > 10_000
+
+
+def test_meshing_leaves_sigpipe_to_python(g32208, tmp_path):
+    """gmsh.initialize sets SIGPIPE to the C default (terminate); after a mesh kegel gives it back
+    to Python (ignore: a write to a closed pipe raises BrokenPipeError). Without this the whole
+    test run died at the Dask test after the meshing tests ("make: Broken pipe")."""
+    import ctypes
+
+    libc = ctypes.CDLL(None)
+    libc.signal.restype = ctypes.c_void_p
+    libc.signal.argtypes = [ctypes.c_int, ctypes.c_void_p]
+    cg = cfd_geometry(g32208, sector=True)
+    build_mesh(cg, "tiny", tmp_path / "b.msh")
+    prev = libc.signal(13, ctypes.c_void_p(1))  # SIGPIPE: read the C-level handler (1 = SIG_IGN)
+    libc.signal(13, ctypes.c_void_p(prev))
+    assert prev == 1
