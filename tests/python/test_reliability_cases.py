@@ -361,7 +361,8 @@ def test_two_live_runs_never_share_a_folder(tmp_path):
     refused while the first computes, and the first's results are whole."""
     out = tmp_path / "run"
     exe = Path(sys.executable).with_name("kegel")
-    first = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--format", "json"],
+    # one process: its points reach the stream one by one (a parallel chain of 16 reaches it whole)
+    first = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--format", "json", "--jobs", "1"],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         t0 = time.monotonic()

@@ -20,8 +20,11 @@ SCENE = "examples/32216_table3.toml"  # 15 points, about 0.5 s each
 
 
 def _kegel(*args: str) -> subprocess.Popen:
+    """A live `kegel run` in one process: its points reach the stream one by one (a parallel
+    chain of 16 points reaches it whole, after the moment these tests interrupt)."""
     exe = Path(sys.executable).with_name("kegel")
-    return subprocess.Popen([str(exe), *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    jobs = ["--jobs", "1"] if args and args[0] == "run" else []
+    return subprocess.Popen([str(exe), *args, *jobs], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
 def _stream_points(folder: Path) -> int:
