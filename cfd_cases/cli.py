@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from .geometry import CELLS_ACROSS_GAP, CLEARANCE_RATIO, GAP_RATIO
+from .geometry import CELLS_ACROSS_GAP, CELLS_ACROSS_GAP_RANGE, CLEARANCE_RATIO, GAP_RATIO, RATIO_RANGES
 
 __all__ = ["add_cfd_parser"]
 
@@ -98,7 +98,8 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         extra["housing_clearance_m"] = s_m
     if getattr(args, "frame", "cage") != "cage":
         extra["frame"] = args.frame
-    for key, option, lo, hi in (("gap_ratio", "--gap-ratio", 1e-4, 0.2), ("clearance_ratio", "--clearance-ratio", 1e-3, 0.2)):
+    for key, (lo, hi) in RATIO_RANGES.items():
+        option = "--" + key.replace("_", "-")
         value = getattr(args, key, None)
         if value is not None:
             if not (math.isfinite(value) and lo <= value <= hi):
@@ -106,8 +107,9 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
             extra[key] = float(value)
     cells = getattr(args, "cells_across_gap", None)
     if cells is not None:
-        if not 1 <= cells <= 20:
-            raise KegelInputError(src, "--cells-across-gap", cells, "a whole number from 1 to 20")
+        c_lo, c_hi = CELLS_ACROSS_GAP_RANGE
+        if not c_lo <= cells <= c_hi:
+            raise KegelInputError(src, "--cells-across-gap", cells, f"a whole number from {c_lo} to {c_hi}")
         extra["cells_across_gap"] = cells
     if getattr(args, "sector", False):
         if level is not None:

@@ -65,6 +65,10 @@ CLEARANCE_RATIO = 0.08
 #: gap over this number, growing with the gap away from the contact line); None: the mesh level's
 #: wall size only (a whole-bearing mesh with 3 cells across costs about 17 x 80 k cells at tiny).
 CELLS_ACROSS_GAP: int | None = None
+#: Accepted ranges (inclusive) of the gap and clearance ratios (fractions of D_w) and of the cells
+#: across a gap; one table for the geometry, CfdPoint and the command line.
+RATIO_RANGES = {"gap_ratio": (1e-4, 0.2), "clearance_ratio": (1e-3, 0.2)}
+CELLS_ACROSS_GAP_RANGE = (1, 20)
 SMALL_RIB_RATIO = 0.35
 HOUSING_CLEARANCE_RATIO = 0.25
 
@@ -182,7 +186,8 @@ def cfd_geometry(g: BearingGeometry, *, housing_clearance_m: float | None = None
     s = HOUSING_CLEARANCE_RATIO * T if housing_clearance_m is None else housing_clearance_m
     if s <= 0:
         raise ValueError(f"housing_clearance_m = {s}: expected a positive distance")
-    for name, value, lo, hi in (("gap_ratio", gap_ratio, 1e-4, 0.2), ("clearance_ratio", clearance_ratio, 1e-3, 0.2)):
+    for name, value in (("gap_ratio", gap_ratio), ("clearance_ratio", clearance_ratio)):
+        lo, hi = RATIO_RANGES[name]
         if not (isinstance(value, (int, float)) and math.isfinite(value) and lo <= value <= hi):
             raise ValueError(f"{name} = {value!r}: expected a fraction of the roller diameter in [{lo}, {hi}]")
     gap = gap_ratio * Dw
@@ -319,7 +324,7 @@ def _revolve_wedge(occ, section, phi0: float, angle: float) -> int:
     return tag
 
 
-def _gap_size_expression(cg: CfdGeometry, k: int, line, cells: int, *, inner: bool) -> str:
+def _gap_size_expression(cg: CfdGeometry, k: int, line, cells: int) -> str:
     """gmsh MathEval expression of the mesh size in raceway contact gap of roller ``k``: the sum
     of the distances to the roller's cone and to the raceway cone (the local gap where the
     point lies between them) over ``cells``; large away from the gap."""
@@ -370,8 +375,9 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
     with_cage = cage
     if level not in MESH_LEVELS:
         raise ValueError(f"mesh level {level!r}: expected one of {', '.join(MESH_LEVELS)}")
-    if cells_across_gap is not None and not (isinstance(cells_across_gap, int) and 1 <= cells_across_gap <= 20):
-        raise ValueError(f"cells_across_gap = {cells_across_gap!r}: expected a whole number from 1 to 20")
+    lo, hi = CELLS_ACROSS_GAP_RANGE
+    if cells_across_gap is not None and not (isinstance(cells_across_gap, int) and lo <= cells_across_gap <= hi):
+        raise ValueError(f"cells_across_gap = {cells_across_gap!r}: expected a whole number from {lo} to {hi}")
     Dw = cg.bearing.roller_mean_diameter_m
     size_max = MESH_LEVELS[level]["size_max"] * Dw
     size_gap = MESH_LEVELS[level]["size_gap"] * Dw
@@ -428,9 +434,9 @@ def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: in
         # and in each raceway contact gap: the local gap over cells_across_gap
         gap_fields = []
         for k in ks if cells_across_gap is not None else []:
-            for line, inner in ((cg.inner_raceway_line_m, True), (cg.outer_raceway_line_m, False)):
+            for line in (cg.inner_raceway_line_m, cg.outer_raceway_line_m):
                 f = fields.add("MathEval")
-                fields.setString(f, "F", _gap_size_expression(cg, k, line, cells_across_gap, inner=inner))
+                fields.setString(f, "F", _gap_size_expression(cg, k, line, cells_across_gap))
                 gap_fields.append(f)
         f_min = fields.add("Min")
         fields.setNumbers(f_min, "FieldsList", [f_th, *gap_fields])

@@ -48,7 +48,8 @@ import numpy as np
 from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
                    run_utility, set_controldict_value, time_dirs, write_field_values)
 from .forces import ForceSeries, read_forces
-from .geometry import (CELLS_ACROSS_GAP, CLEARANCE_RATIO, GAP_RATIO, MESH_LEVELS, CfdGeometry, build_mesh,
+from .geometry import (CELLS_ACROSS_GAP, CELLS_ACROSS_GAP_RANGE, CLEARANCE_RATIO, GAP_RATIO, MESH_LEVELS, RATIO_RANGES,
+                       CfdGeometry, build_mesh,
                        cfd_geometry, roller_name)
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
 from .steady import SteadyTest, steady_drift
@@ -129,14 +130,15 @@ class CfdPoint:
                              "do not repeat from pocket to pocket)")
         if self.sector and self.frame != "cage":
             raise ValueError("sector = true: only in the cage frame (frame = 'cage'), where the flow repeats")
-        for name, lo, hi in (("gap_ratio", 1e-4, 0.2), ("clearance_ratio", 1e-3, 0.2)):
+        for name, (lo, hi) in RATIO_RANGES.items():
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and lo <= v <= hi):
                 raise ValueError(f"{name} = {v!r}: expected a fraction of the roller diameter in [{lo}, {hi}]")
+        c_lo, c_hi = CELLS_ACROSS_GAP_RANGE
         if self.cells_across_gap is not None and (isinstance(self.cells_across_gap, bool)
                                                   or not isinstance(self.cells_across_gap, int)
-                                                  or not 1 <= self.cells_across_gap <= 20):
-            raise ValueError(f"cells_across_gap = {self.cells_across_gap!r}: expected a whole number from 1 to 20")
+                                                  or not c_lo <= self.cells_across_gap <= c_hi):
+            raise ValueError(f"cells_across_gap = {self.cells_across_gap!r}: expected a whole number from {c_lo} to {c_hi}")
         if self.frame not in FRAMES:
             raise ValueError(f"frame = {self.frame!r}: expected one of {', '.join(FRAMES)}")
         if self.housing_clearance_m is not None and not (math.isfinite(self.housing_clearance_m)
