@@ -41,7 +41,7 @@ import time
 from collections.abc import Callable
 from dataclasses import MISSING, asdict, dataclass, field, fields
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 import numpy as np
 
@@ -533,9 +533,9 @@ class _Progress:
     The ETA is to the end time (``end``, simulated seconds or iterations, named in the line); a
     steady torque usually stops the run sooner, at a point no one can foresee."""
 
-    def __init__(self, every_s: float = 5.0, stream=sys.stderr, end: str = "", monitor: "_SteadyMonitor | None" = None):
+    def __init__(self, every_s: float = 5.0, stream: "TextIO | None" = None, end: str = "", monitor: "_SteadyMonitor | None" = None):
         self.every_s = every_s
-        self.stream = stream
+        self.stream = stream if stream is not None else sys.stderr  # at call time: a redirect counts
         self.last = 0.0
         self.end = end
         self.monitor = monitor  # its steady test's state is what tells when the run ends

@@ -36,11 +36,10 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 from .errors import KegelInputError
 from .io import atomic_write_json, provenance
@@ -605,7 +604,7 @@ def _plot(c: Comparison, path: Path) -> Path:
     return path
 
 
-def print_report(result: dict[str, Any], file=sys.stdout) -> None:
+def print_report(result: dict[str, Any], file: TextIO | None = None) -> None:
     """The validation table of :func:`run_validation`: the measured comparison first, then the
     datasets without points, then the engineering models (information, no verdict)."""
     for c in result["objects"]:

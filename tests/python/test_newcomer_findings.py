@@ -328,3 +328,18 @@ def test_api_result_plot_writes_a_file_or_returns_the_figure_and_gives_the_power
     omega = np.array([500.0, 2000.0]) * 2 * math.pi / 60
     assert r.power_loss_W == pytest.approx(r.total_torque_Nm * omega, rel=1e-12)
     assert r[0].power_loss_W == pytest.approx(float(r.total_torque_Nm[0]) * omega[0], rel=1e-12)
+
+
+def test_printed_reports_follow_a_redirect_made_after_import():
+    """The CI run printed the validation report past ``call_kegel``'s redirect: ``print_report``
+    had bound ``sys.stdout`` as a default argument when kegel.validation was first imported (by
+    an earlier test), so its lines went to the stream of that moment."""
+    import io
+    from contextlib import redirect_stdout
+
+    from kegel.validation import print_report
+
+    buf = io.StringIO()
+    with redirect_stdout(buf):
+        print_report({"objects": [], "file": "x.json", "plots": {"a name": "a.png"}})
+    assert "x.json" in buf.getvalue()
