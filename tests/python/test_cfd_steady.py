@@ -345,3 +345,33 @@ def test_the_flooded_steady_monitor_states_its_spread(tmp_path, monkeypatch):
     mon.last_check = -1e9
     assert mon(None) is False
     assert "torque spread 4.0 x the steady limit" in mon.status and "-40 mN m" in mon.status
+
+
+@pytest.mark.parametrize("outer_Nm, steady", [(0.040, True), (0.031, False)])
+def test_flat_torques_with_unbalanced_walls_are_not_steady(tmp_path, monkeypatch, outer_Nm, steady):
+    """Flooded: flat ring and cage torques are not enough; the wall torques about the axis must
+    also balance (within twice the steady tolerance). The g = 0.02 D_w gap-study case stopped at
+    iteration 264 on flat torques with the balance at -23 %."""
+    import numpy as np
+    from types import SimpleNamespace
+
+    import kegel.cfd_cases.run as run
+
+    n = np.arange(1, 401, dtype=float)
+
+    def flat(mz, force=(0.0, 0.0, 0.0)):
+        s = SimpleNamespace(time=n, moment_total=np.zeros((400, 3)), force_total=np.zeros((400, 3)))
+        s.moment_total[:, 2] = mz
+        s.force_total[:] = force
+        return s
+
+    # drive 0.04 N m on the inner ring; the outer ring takes outer_Nm back, the roller's tangential
+    # drag at radius 0.03 m 0.0 N m: balance (0.04 - outer) / 0.04
+    bodies = {"forces_inner_ring": flat(0.040), "forces_shaft": flat(0.0), "forces_outer_ring": flat(-outer_Nm),
+              "forces_housing": flat(0.0), "forces_cage": flat(0.0), "forces_roller_0": flat(0.0)}
+    monkeypatch.setattr(run, "read_forces", lambda case, name: bodies[name])
+    meta = {"rollers": [{"name": "roller_0", "centre_m": [0.03, 0.0, 0.0]}]}
+    mon = run._SteadyMonitor(tmp_path, True, 1.0, 0.02, meta)
+    mon.last_check = -1e9
+    assert mon(None) is steady
+    assert ("balance +0.0 %" if steady else "balance +22.5 %") in mon.status
