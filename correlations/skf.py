@@ -79,6 +79,7 @@ from typing import Any
 
 from ..data import BearingData
 from ..errors import KegelInputError
+from ..limits import check_kinematic_viscosity, check_speed_factor
 
 __all__ = [
     "DRAG_EDITIONS",
@@ -427,8 +428,7 @@ def skf_drag_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_viscos
         A negative or NaN speed or oil level, a viscosity <= 0, neither or both oil levels, an
         unknown edition.
     """
-    w = _require("speed_rad_s", speed_rad_s, "rad/s")
-    nu = _require("kinematic_viscosity_m2_s", kinematic_viscosity_m2_s, "m^2/s", positive=True)
+    w, nu = _speed_viscosity(bearing, speed_rad_s, kinematic_viscosity_m2_s)
     _choice("edition", edition, DRAG_EDITIONS)
     if (oil_level_m is None) == (oil_level_H_m is None):
         raise KegelInputError(_SOURCE, "oil_level_m", oil_level_m,
@@ -443,12 +443,23 @@ def skf_drag_moment(bearing: SkfBearing, *, speed_rad_s: float, kinematic_viscos
     return _drag(bearing, w * _RPM, nu * _NU_MM2_S, H, edition)
 
 
+def _speed_viscosity(bearing: SkfBearing, speed_rad_s: float, nu_m2_s: float) -> tuple[float, float]:
+    """The speed magnitude (>= 0, ``n d_m`` within :data:`kegel.limits.MAX_SPEED_FACTOR_RPM_MM`
+    with the catalogue's d_m) and the kinematic viscosity (within
+    :data:`kegel.limits.KINEMATIC_VISCOSITY_RANGE_M2_S`), checked."""
+    w = _require("speed_rad_s", speed_rad_s, "rad/s")
+    w = check_speed_factor(w, bearing.mean_diameter_m, source=_SOURCE, key="speed_rad_s",
+                           designation=bearing.designation, signed=False)
+    _require("kinematic_viscosity_m2_s", nu_m2_s, "m^2/s", positive=True)
+    nu = check_kinematic_viscosity(nu_m2_s, source=_SOURCE, key="kinematic_viscosity_m2_s")
+    return w, nu
+
+
 def _loaded_point(bearing: SkfBearing, speed_rad_s: float, nu_m2_s: float, Fa_N: float,
                   Fr_N: float) -> tuple[float, float, float, float]:
     """Checked operating point of the rolling and sliding terms in the catalogue's units
     (n in r/min, nu in mm^2/s, forces in N); the bearing's series constants must exist."""
-    w = _require("speed_rad_s", speed_rad_s, "rad/s")
-    nu = _require("kinematic_viscosity_m2_s", nu_m2_s, "m^2/s", positive=True)
+    w, nu = _speed_viscosity(bearing, speed_rad_s, nu_m2_s)
     Fa = _require("axial_load_N", Fa_N, "N")
     Fr = _require("radial_load_N", Fr_N, "N")
     _load_constants(bearing)

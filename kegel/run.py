@@ -286,13 +286,20 @@ def preflight(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
     return runs
 
 
+def power_loss_W(total_torque_Nm: float, speed_rad_s: float) -> float:
+    """Power lost in the bearing [W]: the total torque (friction and hydraulic loss) times the
+    shaft speed, ``|M_total omega|`` (the ``P_loss`` column of ``kegel run``'s table, beside the
+    torque in results.json and results.csv)."""
+    return abs(float(total_torque_Nm) * float(speed_rad_s))
+
+
 def _failed_record(op, exc: Exception) -> dict[str, Any]:
     """The record of a point whose solver raised: the operating point, ``converged`` false, the
     message as ``failure``, no figures (None, empty in the CSV)."""
     msg = str(exc).strip() or type(exc).__name__  # whole: a divergence report shows the state that explains it
     print(f"kegel: point {op.index} failed: {msg.splitlines()[0]}", file=sys.stderr)
     return {**op.as_dict(), "friction_torque_Nm": None, "hydraulic_torque_Nm": None, "total_torque_Nm": None,
-            "converged": False, "failure": f"{type(exc).__name__}: {msg}", "solved": False,
+            "power_loss_W": None, "converged": False, "failure": f"{type(exc).__name__}: {msg}", "solved": False,
             "torque_by_contact_Nm": {}, "torque_by_mechanism_Nm": {}}
 
 
@@ -451,6 +458,7 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
         "friction_torque_Nm": fr.drive_torque_Nm,
         "hydraulic_torque_Nm": hyd_torque,
         "total_torque_Nm": fr.drive_torque_Nm + hyd_torque,
+        "power_loss_W": power_loss_W(fr.drive_torque_Nm + hyd_torque, op.speed_rad_s),
         "outer_ring_torque_Nm": fr.outer_ring_torque_Nm,
         "power_input_W": fr.power_input_W,
         "power_dissipated_W": fr.power_dissipated_W,
@@ -745,6 +753,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         "friction_torque_Nm": friction,
         "hydraulic_torque_Nm": roller_drag + churning,
         "total_torque_Nm": friction + roller_drag + churning,
+        "power_loss_W": power_loss_W(friction + roller_drag + churning, w),
         "outer_ring_torque_Nm": st["outer_ring_torque_Nm"],
         "outer_ring_torque_std_Nm": st["outer_ring_torque_std"],
         "power_input_W": st["power_input_W"],
@@ -819,7 +828,7 @@ def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tu
 #: results.csv: the point's own columns, then the derived ones (see _csv_row).
 CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
                "tilt_moment_Nm", "misalignment_rad", "axial_force_N", "friction_torque_Nm", "hydraulic_torque_Nm",
-               "total_torque_Nm", "converged", "failure", "cage_model", "pocket_fraction", "cage_speed_rpm",
+               "total_torque_Nm", "power_loss_W", "converged", "failure", "cage_model", "pocket_fraction", "cage_speed_rpm",
                "cage_slip", "power_input_W", "power_balance_error", "start")
 CSV_DERIVED = ("Lambda_min", "Lambda_min_contact", "hydraulic_source", "hydraulic_inner_ring_Nm",
                "hydraulic_outer_ring_Nm", "hydraulic_cage_Nm", "skf_rolling_sliding_Nm", "skf_drag_Nm",
@@ -848,6 +857,8 @@ def _csv_row(p: dict[str, Any]) -> list[Any]:
                    "inlet_gap_ratio_inner", "inlet_gap_ratio_outer", "rolling_force_factor_inner",
                    "rolling_force_factor_outer")),
                "; ".join(w["code"] for w in p.get("warnings", ()))]
+    if p.get("power_loss_W") is None and p.get("total_torque_Nm") is not None and p.get("speed_rad_s") is not None:
+        p = {**p, "power_loss_W": power_loss_W(p["total_torque_Nm"], p["speed_rad_s"])}  # a record of an older run
     row = [p.get(c) for c in CSV_COLUMNS] + derived
     row += [(p.get("torque_by_contact_Nm") or {}).get(c) for c in CONTACTS_WITH_CAGE]
     row += [(p.get("torque_by_mechanism_Nm") or {}).get(k) for k in MECHANISMS]

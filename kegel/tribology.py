@@ -162,7 +162,18 @@ def load_friction(name: str = "steel_mineral_oil", *, source: str | Path = "<arg
 
 def cage_speed_rad_s(g: BearingGeometry, inner_speed_rad_s: float) -> float:
     """Cage speed of apex-matched pure rolling with the outer ring fixed,
-    ``omega_c = omega_i d_i / (2 d_m)`` with ``d_i = d_m - D_w cos(beta)``."""
+    ``omega_c = omega_i d_i / (2 d_m)`` with ``d_i = d_m - D_w cos(beta)``.
+
+    Raises
+    ------
+    KegelInputError
+        ``inner_speed_rad_s`` not a finite number with ``|n| d_m`` within
+        :data:`kegel.limits.MAX_SPEED_FACTOR_RPM_MM` (0 is accepted: a ring at rest).
+    """
+    from .limits import check_speed_factor
+
+    inner_speed_rad_s = check_speed_factor(inner_speed_rad_s, g.pitch_diameter_m, source="<argument>",
+                                           key="inner_speed_rad_s", designation=str(g.designation))
     return inner_speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
 
 
