@@ -586,7 +586,8 @@ def pocket_film_loss(g, viscosity_Pas: float, inner_speed_rad_s: float, clearanc
 
 
 def thin_film_losses(g, bearing, *, lubricant: str, temperature_K: float, inner_speed_rad_s: float,
-                     clearance_m: float, rib_load_N: float | None = None, cells: int = 200) -> dict[str, Any]:
+                     clearance_m: float, rib_load_N: float | None = None, cells: int = 200,
+                     material: str = "bearing_steel") -> dict[str, Any]:
     """All thin-film terms of a CFD point, as they go into its ``results.json``.
 
     Parameters
@@ -599,6 +600,8 @@ def thin_film_losses(g, bearing, *, lubricant: str, temperature_K: float, inner_
         The CFD geometry's clearance ``c`` (``CfdGeometry.clearance_m``).
     rib_load_N
         One roller's rib load (default: at :data:`REFERENCE_AXIAL_LOAD_N` axial load).
+    cells, material
+        See :func:`rib_film_loss`.
 
     Returns
     -------
@@ -609,7 +612,7 @@ def thin_film_losses(g, bearing, *, lubricant: str, temperature_K: float, inner_
     from kegel.lubricant import lubricant_state
 
     rib = rib_film_loss(g, bearing, lubricant, temperature_K, inner_speed_rad_s, clearance_m,
-                        rib_load_N=rib_load_N, cells=cells)
+                        rib_load_N=rib_load_N, cells=cells, material=material)
     eta = lubricant_state(lubricant, temperature_K).dynamic_viscosity_Pas
     pocket = pocket_film_loss(g, eta, inner_speed_rad_s, clearance_m)
     w = abs(inner_speed_rad_s)

@@ -212,3 +212,24 @@ def test_rib_and_pocket_inputs_are_checked(bg):
         pocket_film_loss(g, 0.05, float("inf"), 0.0008)
     with pytest.raises(ValueError, match="gap_m"):
         film_dissipation_W(0.05, np.ones(3), np.array([1e-5, 0.0, 1e-5]), 1e-8)
+
+
+def test_results_json_terms_of_a_cfd_point(bg):
+    """What run_case writes into results.json (thin_film_loss_Nm, thin_films), without a CFD run."""
+    import json
+
+    from kegel.cfd_cases.run import CfdPoint, thin_film_json
+
+    b, g = bg
+    point = CfdPoint(bearing="32208", speed_rad_s=W_2000, temperature_K=323.15, oil_level_m=None)
+    meta = {"geometry": {"clearance_m": 0.0008}}
+    thin = thin_film_json(point, meta)
+    direct = thin_film_losses(g, b, lubricant="FVA3", temperature_K=323.15, inner_speed_rad_s=W_2000,
+                              clearance_m=0.0008)
+    assert thin["loss_torque_Nm"] == pytest.approx(direct["loss_torque_Nm"], rel=1e-12)
+    json.loads(json.dumps(thin, allow_nan=False))          # strict JSON
+    # without the clearance in the case's metadata: the point's geometry (c = 0.08 D_w = 0.8 mm)
+    assert thin_film_json(point, {})["loss_torque_Nm"] == pytest.approx(thin["loss_torque_Nm"], rel=1e-12)
+    bath = CfdPoint(bearing="32208", speed_rad_s=W_2000, temperature_K=323.15, oil_level_m=0.02)
+    out = thin_film_json(bath, meta)
+    assert out["loss_torque_Nm"] is None and "flooded" in out["not_evaluated"]
