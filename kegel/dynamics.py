@@ -42,6 +42,7 @@ from .tribology import cage_speed_rad_s
 D = _core.dynamics
 
 __all__ = [
+    "ATOL_VELOCITY_M_S",
     "DAMPING_TIME_S",
     "STEADY_HOLD_PASSES",
     "STEADY_SIGNALS",
@@ -78,6 +79,12 @@ STEADY_HOLD_PASSES = 1.0
 #: Roller passes over which a trend of the window means may change a signal by at most the
 #: tolerance, whatever the window: a slow ramp is a drift, not a steady state.
 STEADY_TREND_PASSES = 4.0
+
+#: Absolute tolerance of the velocities in the integrator's error test (m/s; the angular rates get
+#: it over the roller radius, the positions 1e-3 of it per rad/s of the start speed + 1 pm).
+#: 1e-7 m/s: the 32216 at 2000 rpm, 6 kN moves its mean torque by +0.007 % against 1e-8 m/s and
+#: takes half the steps (docs/performance.md, Dynamic simulation); 1e-6 m/s moves it by +0.09 %.
+ATOL_VELOCITY_M_S = 1e-7
 
 #: Stiffness-proportional contact damping time when the friction file gives none: d_max = tau x
 #: the contact stiffness at delta_max (Eq. 2). The value and its source (Kraemer) live in
@@ -370,10 +377,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              misalignment_rad: float = 0.0, slices: int = 20, method: str = "independent", cage: bool = True,
              output_interval_s: float = 1e-4, average_fraction: float = 0.5, rtol: float = 1e-7,
              steady_tolerance: float = STEADY_TOLERANCE,
-             atol_velocity_m_s: float = 1e-8,
+             atol_velocity_m_s: float = ATOL_VELOCITY_M_S,
              damping_time_s: float | None = None, elements: Sequence[Any] = (), progress: bool = False,
              checkpoint: str | Path | None = None, checkpoint_interval_s: float = 5e-3,
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
+             integrator_options: dict[str, Any] | None = None,
              raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
              tilt_moment_Nm: float = 0.0,
              max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1,
@@ -422,6 +430,17 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     max_ring_displacement_m
         The run stops with :class:`SimulationDiverged` when the inner ring moves further: the
         bearing has come apart (far beyond any elastic deflection).
+    atol_velocity_m_s
+        Absolute tolerance of the velocities (:data:`ATOL_VELOCITY_M_S`); velocities and rates
+        have no relative tolerance (a relative one on the orbital speed would not bound the
+        sliding speed that sets the friction).
+    integrator_options
+        Numerical switches of ``kegel._core.dynamics.IntegratorSettings`` by name (for
+        benchmarks and checks): ``structured_linear_solver`` (block-arrow LU of the Newton
+        matrix, default true; false: SUNDIALS' dense LU), ``quadratures_in_state`` (the torque
+        and power integrals as states, default true; false: CVODES' quadratures, one more
+        evaluation of the contacts per step), ``jacobian_max_age_steps`` (0: CVODE's 51),
+        ``max_step_s``, ``max_steps``. Unknown names are an error.
     initial_speed_rad_s
         Speed of the quasi-static initial state (default: the profile's speed at t = 0; with 0 the
         bodies start at rest).
@@ -523,6 +542,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     st.atol_rate_rad_s = atol_velocity_m_s / g.roller_mean_diameter_m * 2.0
     st.atol_position_m = 1e-3 * atol_velocity_m_s / max(abs(w_start), 1.0) + 1e-12
     st.coloured_jacobian = coloured_jacobian
+    for key, value in (integrator_options or {}).items():
+        if key.startswith("_") or not hasattr(st, key):
+            raise KegelInputError("<argument>", f"integrator_options.{key}", value,
+                                  "an attribute of kegel._core.dynamics.IntegratorSettings")
+        setattr(st, key, value)
     t_start = 0.0
     rows: dict[str, list] = {}
     times: list[float] = []
@@ -548,13 +572,14 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     grid = grid[grid > t_start + 1e-15] if times else grid
     prog = _Progress(t_start, duration_s, progress)
     finished, message, last_ck = True, "", t_start
-    integration_s = 0.0
+    integration_s = integration_cpu_s = 0.0
     pace = _Pace()
     for tk in grid:
         if tk > sim.time_s:
-            t_int = time.perf_counter()
+            t_int, c_int = time.perf_counter(), time.process_time()
             flag = pace.advance(sim, float(tk))
             integration_s += time.perf_counter() - t_int
+            integration_cpu_s += time.process_time() - c_int
             if flag != 0:
                 finished, message = False, sim.message
                 break
@@ -586,6 +611,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if finished and ck is not None:
         ck.unlink(missing_ok=True)
     stats = {"initial_state": initial, "resumed_from_s": resumed_from, "integration_wall_s": integration_s,
+             "integration_cpu_s": integration_cpu_s,
              "cage_to_inner_speed_pure_rolling": (wc_pure / w_start if w_start else _pure_rolling(g, 1.0)[0]),
              "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
