@@ -46,7 +46,11 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--revolutions", type=float, default=1.0)
+    ap.add_argument("--plot-only", action="store_true", help="redraw the plot from benchmarks/results/dynamics.json")
     args = ap.parse_args()
+    if args.plot_only:
+        plot(json.loads((OUT / "dynamics.json").read_text())["rows"])
+        return
     if hasattr(os, "sched_setaffinity"):
         os.sched_setaffinity(0, {sorted(os.sched_getaffinity(0))[0]})  # one core
     b = kegel.load_bearing("32216")
@@ -114,17 +118,24 @@ def main() -> None:
               f"{r['wall_per_revolution_s']:8.2f} {r['cpu_per_revolution_s']:8.2f} {r['cpu_over_fine']:6.2f} "
               f"{100 * r['deviation_from_finest']:+14.2f}% {100 * r['power_balance_error']:+7.2f}% "
               f"{r['dynamic_over_quasi_static']:7.4f}")
+    plot(rows)
+
+
+def plot(rows: list[dict]) -> None:
+    """benchmarks/results/dynamics.png: CPU time per revolution against the deviation from fine."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for r in rows:
-        ax.scatter(r["cpu_per_revolution_s"], 100 * abs(r["deviation_from_finest"]) + 1e-3)
-        ax.annotate(f"{r['level'] or ''} {r['method'].replace('alternative_slicing', 'AST')} {r['slices']}"
-                    f" atol {r['atol_velocity_m_s']:.0e}",
-                    (r["cpu_per_revolution_s"], 100 * abs(r["deviation_from_finest"]) + 1e-3), fontsize=7)
+    for i, r in enumerate(rows):
+        x, y = r["cpu_per_revolution_s"], 100 * abs(r["deviation_from_finest"]) + 1e-3
+        ax.scatter(x, y)
+        name = r["level"].split(",")[0] if r["level"] else ""
+        ax.annotate(f"{name} {r['method'].replace('alternative_slicing', 'AST')} {r['slices']}, "
+                    f"atol {r['atol_velocity_m_s']:.0e}".strip(), (x, y), fontsize=7,
+                    xytext=(4, 6 if i % 2 else -10), textcoords="offset points")
     ax.axvline(TARGET_S, color="0.6", ls=":", label=f"target: {TARGET_S:g} s per revolution at default")
     ax.set_yscale("log")
     ax.set_xlabel("CPU time per shaft revolution, one core [s] (median; = wall time on an idle core)")
@@ -134,7 +145,6 @@ def main() -> None:
     fig.tight_layout()
     fig.savefig(OUT / ".dynamics.tmp.png", dpi=110)
     os.replace(OUT / ".dynamics.tmp.png", OUT / "dynamics.png")
-
 
 if __name__ == "__main__":
     main()
