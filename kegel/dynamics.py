@@ -385,7 +385,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
              tilt_moment_Nm: float = 0.0,
              max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1,
-             load_profile: Sequence[tuple[float, float, float]] = ()) -> DynamicResult:
+             load_profile: Sequence[tuple[float, float, float]] = (),
+             max_duration_s: float | None = None) -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -393,7 +394,13 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     speed_profile
         (time_s, inner-ring speed in rad/s) points; linear in between, constant after the last.
     duration_s
-        Simulated time.
+        Simulated time (at least; see ``max_duration_s``).
+    max_duration_s
+        Automatic duration: a run whose torques and cage speed have not settled (:func:`settling`)
+        by ``duration_s`` goes on, a quarter of ``duration_s`` at a time, until they settle or the
+        run reaches this cap (at most the scenes' limit of a dynamic run). ``stats["duration_s"]``
+        gives the simulated time, ``stats["extended"]`` whether it went past ``duration_s``. None:
+        exactly ``duration_s``.
     axial_N, axial_offset_m
         Force-controlled axial load (the ring is free axially) or a held axial offset towards the
         apex (the ring is held axially at the quasi-static position for that offset).
@@ -459,7 +466,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if not (MIN_OUTPUT_INTERVAL_S <= output_interval_s <= duration_s):
         raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
                               f"in [{MIN_OUTPUT_INTERVAL_S:g}, {duration_s:g}] s")
-    if duration_s / output_interval_s > MAX_DYNAMIC_OUTPUTS:
+    if max_duration_s is not None and not duration_s <= max_duration_s <= MAX_DYNAMIC_DURATION_S:
+        raise KegelInputError("<argument>", "max_duration_s", max_duration_s,
+                              f"a time from duration_s = {duration_s:g} s to {MAX_DYNAMIC_DURATION_S:g} s")
+    if max(duration_s, max_duration_s or 0.0) / output_interval_s > MAX_DYNAMIC_OUTPUTS:
         raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
                               f"at most {MAX_DYNAMIC_OUTPUTS} outputs (here {duration_s / output_interval_s:.3g})")
     lubricant_state(lubricant, temperature_K, key="temperature_K")
@@ -574,34 +584,49 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     finished, message, last_ck = True, "", t_start
     integration_s = integration_cpu_s = 0.0
     pace = _Pace()
-    for tk in grid:
-        if tk > sim.time_s:
-            t_int, c_int = time.perf_counter(), time.process_time()
-            flag = pace.advance(sim, float(tk))
-            integration_s += time.perf_counter() - t_int
-            integration_cpu_s += time.process_time() - c_int
-            if flag != 0:
-                finished, message = False, sim.message
+    end_s = duration_s
+    while True:
+        for tk in grid:
+            if tk > sim.time_s:
+                t_int, c_int = time.perf_counter(), time.process_time()
+                flag = pace.advance(sim, float(tk))
+                integration_s += time.perf_counter() - t_int
+                integration_cpu_s += time.process_time() - c_int
+                if flag != 0:
+                    finished, message = False, sim.message
+                    break
+            out = sim.outputs()
+            yr = np.asarray(sim.state)[model.ring_offset:model.ring_offset + 3]
+            moved = float(np.linalg.norm(yr - y0[model.ring_offset:model.ring_offset + 3]))
+            if moved > max_ring_displacement_m:
+                finished = False
+                message = (f"the inner ring moved {moved * 1e3:.2f} mm from its initial place by t = {sim.time_s * 1e3:.3f} ms "
+                           f"(displacement {np.array2string(yr * 1e3, precision=3)} mm): the bearing comes apart. A single "
+                           f"tapered roller bearing needs an axial load above the axial component of the roller "
+                           f"loads (centrifugal force at speed, Fr tan(alpha_o) under radial load); hold the ring "
+                           f"axially (hold_axial) to model the partner bearing")
                 break
-        out = sim.outputs()
-        yr = np.asarray(sim.state)[model.ring_offset:model.ring_offset + 3]
-        moved = float(np.linalg.norm(yr - y0[model.ring_offset:model.ring_offset + 3]))
-        if moved > max_ring_displacement_m:
-            finished = False
-            message = (f"the inner ring moved {moved * 1e3:.2f} mm from its initial place by t = {sim.time_s * 1e3:.3f} ms "
-                       f"(displacement {np.array2string(yr * 1e3, precision=3)} mm): the bearing comes apart. A single "
-                       f"tapered roller bearing needs an axial load above the axial component of the roller "
-                       f"loads (centrifugal force at speed, Fr tan(alpha_o) under radial load); hold the ring "
-                       f"axially (hold_axial) to model the partner bearing")
+            times.append(float(sim.time_s))
+            states.append(np.asarray(sim.state))
+            quads.append(np.asarray(sim.quadratures))
+            _record(rows, out)
+            prog.update(sim.time_s, sim.last_step_s, sim.steps)
+            if ck is not None and sim.time_s - last_ck >= checkpoint_interval_s - 1e-15:
+                _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows, checkpoint_key)
+                last_ck = sim.time_s
+        # automatic duration: a run that has not settled by duration_s goes on, a quarter of
+        # duration_s at a time, until it settles or reaches max_duration_s
+        if not finished or max_duration_s is None or end_s >= max_duration_s - 1e-15 or len(times) < 2:
             break
-        times.append(float(sim.time_s))
-        states.append(np.asarray(sim.state))
-        quads.append(np.asarray(sim.quadratures))
-        _record(rows, out)
-        prog.update(sim.time_s, sim.last_step_s, sim.steps)
-        if ck is not None and sim.time_s - last_ck >= checkpoint_interval_s - 1e-15:
-            _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows, checkpoint_key)
-            last_ck = sim.time_s
+        tt = np.asarray(times)
+        if settling(tt, np.asarray(quads), g, float(np.interp(tt[-1], prof[:, 0], prof[:, 1])),
+                    output_interval_s=output_interval_s, tol=steady_tolerance).settled:
+            break
+        new_end = min(end_s + max(0.25 * duration_s, 2.0 * output_interval_s), max_duration_s)
+        grid = end_s + output_interval_s * np.arange(1, int((new_end - end_s) / output_interval_s) + 2)
+        grid = np.append(grid[grid < new_end - 0.5 * output_interval_s], new_end)
+        grid = grid[grid > sim.time_s + 1e-15]
+        end_s = new_end
     prog.close()
     t = np.asarray(times)
     series = {k: np.asarray(v, dtype=float) for k, v in rows.items()}
@@ -612,6 +637,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         ck.unlink(missing_ok=True)
     stats = {"initial_state": initial, "resumed_from_s": resumed_from, "integration_wall_s": integration_s,
              "integration_cpu_s": integration_cpu_s,
+             "duration_s": float(times[-1]) if times else 0.0, "extended": end_s > duration_s,
              "cage_to_inner_speed_pure_rolling": (wc_pure / w_start if w_start else _pure_rolling(g, 1.0)[0]),
              "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,
