@@ -250,7 +250,9 @@ def test_light_axial_loads_converge(b32216, slices, method, Fa):
 def test_ring_newton_converges_fast_cold_and_along_a_sweep(b32216, method, radial_N):
     # One finite-difference Jacobian at the start, Broyden updates after every step: from the
     # Palmgren start the residual falls superlinearly (measured 6-7 iterations, counting the
-    # final check), and the next point of a load sweep needs 4-5. The bare chord with a 1e-10
+    # final check), and the next point of a load sweep needs 4-6 (6 at Fr 6.5 kN, independent
+    # slices, since the rib's Hertz contact is scaled from a reference approach: the round-off
+    # of the rib load moved the last residual across the tolerance). The bare chord with a 1e-10
     # tolerance took 22-26 cold and up to 23 warm (AST) and 8 (independent).
     g, b, m = b32216
     model = bearing_model(g, b, m, slices=30, method=method)
@@ -259,7 +261,7 @@ def test_ring_newton_converges_fast_cold_and_along_a_sweep(b32216, method, radia
     assert data.iterations <= 10
     for Fa in (6100.0, 6200.0, 6300.0):
         r = load_distribution(g, b, m, axial_N=Fa, radial_N=radial_N, model=model, data=data)
-        assert data.iterations <= 5, (Fa, data.iterations)
+        assert data.iterations <= 6, (Fa, data.iterations)
         assert r.residual < 1e-8
         assert r.axial_force_N == pytest.approx(Fa, rel=1e-8)
 

@@ -23,6 +23,7 @@
 
 #include "kegel/core/cell_contact.hpp"
 #include "kegel/core/contact_geometry.hpp"
+#include "kegel/core/hertz.hpp"
 #include "kegel/core/line_contact.hpp"
 #include "kegel/core/slice.hpp"
 
@@ -72,6 +73,13 @@ class BearingModel {
   const LineContactModel& outer_line() const noexcept { return outer_; }
   double rib_Rx_m() const noexcept { return rib_Rx_; }
   double rib_Ry_m() const noexcept { return rib_Ry_; }
+  /// The rib's elliptic Hertz contact at the approach delta [m] (hertz_point_contact_approach
+  /// with this model's radii): the ellipticity depends on Rx / Ry only, so the contact at
+  /// delta is the one at a reference approach scaled by Hertz's laws (load ~ delta^1.5, semi-axes
+  /// and pressure ~ delta^0.5; Johnson, Contact Mechanics, 1985, Eq. 4.22-4.26), instead of
+  /// solving the ellipticity (60 bisection steps of elliptic integrals) at every evaluation -
+  /// half the cost of the load distribution before. Zero for delta <= 0.
+  HertzEllipse rib_hertz(double approach_m) const noexcept;
   /// The large end of a roller with mid-point M and axis a (frame of the inner ring).
   RollerEnd roller_end(const Eigen::Vector3d& M, const Eigen::Vector3d& a) const noexcept;
   /// The rib face of the inner ring (its own frame).
@@ -86,6 +94,7 @@ class BearingModel {
   RollerProfile profile_;
   LineContactModel inner_, outer_;
   double rib_Rx_ = 0.0, rib_Ry_ = 0.0;
+  HertzEllipse rib_ref_;  // the rib contact at the reference approach
 };
 
 /// External loads on the inner ring and the speed for the centrifugal force.
@@ -155,15 +164,18 @@ class BearingData {
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
                                        const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
                                        const SurfacePair&, BearingFriction&, int, CageModel) noexcept;
-  std::vector<double> orbit_ratio_;  // roller orbit / cage speed (FreeRollers warm start)
+  std::vector<double> orbit_ratio_;      // FreeRollers warm start: roller orbit / pure-rolling cage speed
+  std::vector<double> free_spin_ratio_;  // and its spin / pure-rolling spin (NaN: no warm start)
+  std::vector<double> free_jacobian_;    // 2 x 2 derivatives of its balances, per roller (chord)
   std::vector<double> spin_ratio_;  // roller spin / its pure-rolling value (warm start)
   double cage_ratio_ = 1.0;         // cage speed / its pure-rolling value (warm start)
   std::vector<double> dSw_, dSc_, dAw_, dAc_;  // spin/cage balance derivatives, reused (chord)
   bool derivatives_valid_ = false;
-  // rib cell model: one grid for all rollers (sized by the largest rib load, reused while the
-  // size stays within 20 %), a warm-started pressure field per roller
+  // rib cell model: one grid for all rollers (sized by the largest rib load of the point), one
+  // workspace (FFT plans), and a warm-start pressure field per roller
   std::shared_ptr<CellContactModel> rib_grid_;
-  std::vector<std::shared_ptr<CellContactData>> rib_fields_;
+  std::shared_ptr<CellContactData> rib_work_;
+  std::vector<std::vector<double>> rib_pressure_;
   double rib_dx_ = 0.0, rib_dy_ = 0.0;
   std::vector<SliceGeometry> geo_;
   std::vector<double> e_;
