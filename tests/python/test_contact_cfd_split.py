@@ -58,3 +58,21 @@ def test_contact_plus_cfd_does_not_depend_on_the_gap():
     assert abs(sums[1] - sums[0]) <= SPLIT_TOLERANCE * abs(d_contact), (
         f"contact + CFD moved by {1e3 * (sums[1] - sums[0]):+.2f} mN m between g/D_w = 0.08 and 0.04, "
         f"the contact by {1e3 * d_contact:+.2f} mN m")
+
+
+#: Over every stored gap (0.08, 0.04, 0.02 D_w) contact + CFD may spread by at most this fraction
+#: of its mean (measured 1.2 %: 812.4, 814.7, 821.9 mN m; the sum creeps up as g shrinks, the
+#: CFD gaining 30 % more than the contact gives up between 0.04 and 0.02: docs/cfd.md).
+SUM_SPREAD_TOLERANCE = 0.015
+
+
+def test_contact_plus_cfd_spreads_little_over_every_stored_gap():
+    rows = _rows()
+    assert len(rows) >= 3
+    sums = []
+    for r in rows:
+        c = contact_loss_at_film_limit(r["gap_m"], bearing="32208", speed="2000 rpm", axial_load="1 kN",
+                                       temperature="50 degC", oil_level="flooded")
+        sums.append(c["friction_torque_Nm"] + r["cfd_loss_Nm"])
+    mean = sum(sums) / len(sums)
+    assert (max(sums) - min(sums)) <= SUM_SPREAD_TOLERANCE * mean, [round(1e3 * s, 1) for s in sums]
