@@ -7,8 +7,8 @@ end of the run against :func:`kegel.cfd_cases.validation.changenet_velex_churnin
 times finer and (with ``--fine``) twice finer; at 50 rad/s (Re = 1000, Fr = 5.1) 24 revolutions,
 the last 6 averaged, on the base mesh.
 
-Run (one core; on an idle core the base mesh takes about 1 min of solver time, 1.5x about 6 min,
-2x about 18 min; the 50 rad/s point about 3 min):
+Run (one core; solver CPU time, about the wall time on an idle core: base mesh 62 s, 1.5x 373 s,
+the 50 rad/s point 162 s; 2x, not run, estimated about 17 min):
 
     .venv/bin/python benchmarks/cfd_immersed_disc.py [--fine]
 

@@ -812,12 +812,15 @@ def changenet_velex_moment_coefficient(*, immersion_ratio: float, oil_volume_rat
     with ``h`` the immersion depth, ``D`` the (pitch) diameter, ``V0`` the oil volume, ``b`` the
     face width, ``Fr = Omega^2 R / g`` and ``Re = Omega R^2 / nu``.
 
-    The paper itself could not be read here (neither it nor Boness 1989 is in the stored
-    literature; only the abstract of the 2008 follow-up, DOI 10.1115/1.2900714, which names the
-    2007 paper's formulas). The constants and exponents are those the gear-churning literature
-    reproduces; the ranges of the data they were fitted on (quoted in that literature as
-    ``h/D`` up to about 0.5, ``V0/D^3`` 8.1-19.2, ``b/D`` 0.2-0.46) and their scatter are not
-    confirmed from the paper.
+    The paper itself could not be read here: neither it nor Boness (1989) nor a secondary source
+    quoting the formulas is in the stored literature (only the first page of the 2008 follow-up,
+    Changenet & Velex, "Housing influence on churning losses in geared transmissions", ASME J.
+    Mech. Des. 130, 062603, DOI 10.1115/1.2900714, which names the 2007 formulas without giving
+    them). The constants, exponents and regime limits above are written from how the
+    gear-churning literature reproduces them, unchecked against the paper; so are the ranges of
+    the data they were fitted on (as usually quoted: ``h/D`` up to about 0.5, ``V0/D^3`` 8.1-19.2,
+    ``b/D`` 0.2-0.46, gears of about 70-200 mm) and the scatter of the measurements about the
+    fit, which is not known here.
 
     Raises
     ------
@@ -997,9 +1000,10 @@ def immersed_disc(
     Defaults: R = 20 mm, b = 8 mm, half immersed (h/D = 0.5), 150 rad/s (1432 rpm, 3 m/s at the
     rim), an oil of 2e-5 m2/s and 870 kg/m3 (``Re = Omega R^2 / nu = 3000``, ``Fr = Omega^2 R / g
     = 46``, ``Re_c = Omega R b / nu = 1200``: the low-speed regime), ``V0/D^3 = 8.9``, ``b/D =
-    0.2``; 10 revolutions, the torque averaged over the last 4 (from rest the torque falls while
-    the bath spins up and levels off after about 6 revolutions at 150 rad/s; at 50 rad/s it still
-    falls after 8). ``mesh_scale`` divides every cell size (and multiplies every layer count): at
+    0.2``; 10 revolutions, the torque averaged over the last 4. From rest the torque falls while
+    the bath spins up, modulated by the box's first sloshing mode (about 0.4 s, 9.5 revolutions at
+    150 rad/s): the window's mean is not a settled value (base mesh: flat over revolutions 6-10,
+    about 5 % lower over 7-12; 1.5x mesh: still falling by 14 % across 6-10). ``mesh_scale`` divides every cell size (and multiplies every layer count): at
     1 the mesh has 8238 hexahedra (the rim in 48 cells, 3 layers over the half thickness, 10 layers
     growing by 1.3 from the face, first 0.6 mm thick).
     """

@@ -61,3 +61,45 @@ def test_changenet_velex_torque_of_the_default_case():
     t2 = changenet_velex_churning_torque(radius_m=0.02, face_width_m=0.008, immersion_depth_m=0.02, oil_volume_m3=v0,
                                          omega_rad_s=100.0, kinematic_viscosity_m2_s=2e-5, density_kg_m3=870.0)
     assert t2 / t == pytest.approx(2.0**0.59, rel=1e-9)
+
+
+@pytest.fixture(scope="module")
+def coarse_disc(tmp_path_factory):
+    """The default case (150 rad/s, 10 revolutions, 8238 cells): about 1 min of solver time on an
+    idle core."""
+    from kegel.cfd_cases.validation import immersed_disc
+
+    return immersed_disc(work_dir=tmp_path_factory.mktemp("immersed_disc"))
+
+
+#: Churning torque of the default case on the mesh 1.5 times finer (27 257 cells), N m
+#: (benchmarks/results/cfd_immersed_disc.json).
+FINER_MESH_TORQUE_NM = 1.1841e-3
+
+
+@pytest.mark.openfoam
+def test_cfd_immersed_disc_conserves_oil_and_agrees_with_the_finer_mesh(coarse_disc):
+    """The VOF run with a wall turning through the free surface keeps the oil (volume change below
+    1e-5; measured 8e-7) and its torque, averaged over revolutions 6-10, lies within 15 % of the
+    1.5x finer mesh's (measured +9.6 %). Neither run is at the end of the bath's spin-up: the
+    finer mesh's torque still falls over the window (-14 % between its halves), the coarse one's
+    is flat there (+1 %) but falls by about 5 % over revolutions 10-12; the bath's first sloshing
+    mode (about 9.5 revolutions) modulates both (docs/cfd.md)."""
+    r = coarse_disc
+    assert r.cells == 8238, r
+    assert r.torque_sim_Nm > 0.0, r
+    assert abs(r.volume_change) < 1e-5, r
+    assert r.torque_sim_Nm == pytest.approx(FINER_MESH_TORQUE_NM, rel=0.15), r
+
+
+@pytest.mark.openfoam
+@pytest.mark.xfail(strict=True, reason="the CFD's churning torque of the smooth 40 mm disc is 60-63 % below Changenet & "
+                   "Velex's (1.30 and 1.18 against 3.21 mN m at 150 rad/s on two meshes; 76 % below at "
+                   "50 rad/s): about what laminar boundary layers on the wetted surface give; the correlation "
+                   "was fitted on gears (docs/cfd.md)")
+def test_cfd_immersed_disc_against_changenet_velex(coarse_disc):
+    """The churning torque against Changenet & Velex within IMMERSED_DISC_TOLERANCE (30 %: an
+    assumed 25 % for the scatter of their measurements about the fit, not readable here, plus 5 %
+    for the coarse mesh). The CFD fails it (see the xfail reason); strict, so that a change that
+    brings the two together is noticed."""
+    assert abs(coarse_disc.relative_error) < IMMERSED_DISC_TOLERANCE, coarse_disc
