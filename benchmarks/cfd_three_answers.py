@@ -7,7 +7,7 @@ contact + SKF drag (the uncut flooded contact, the correlation's whole hydraulic
 cases are those of the gap study (``benchmarks/cfd_gap_study.py``, same folder and names), so the
 2000 rpm case is shared and every case resumes where a session left it.
 
-    .venv/bin/python benchmarks/cfd_three_answers.py [--speeds 500 1000 2000 4000] [--gap 0.08] [--cells 3]
+    .venv/bin/python benchmarks/cfd_three_answers.py [--speeds 500 1000 2000 4000] [--gap 0.08] [--cells 3] [--max-iterations 1500]
     .venv/bin/python benchmarks/cfd_three_answers.py --report     # re-read the stored rows
 
 Output: benchmarks/results/cfd_three_answers.{json,png} (rewritten after every speed; rows of
@@ -37,11 +37,11 @@ def case_name(speed_rpm: float, gap: float, cells: int, mesh: str) -> str:
     return f"32208_{speed_rpm:g}rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}_sector"
 
 
-def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int) -> dict:
+def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int, max_iterations: int) -> dict:
     from kegel.cfd_cases.run import CfdPoint, run_case
 
     p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
-                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=1500, gap_ratio=gap,
+                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
                  cells_across_gap=cells, sector=True)
     case = CASES / case_name(speed_rpm, gap, cells, mesh)
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
@@ -120,6 +120,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cells", type=int, default=3)
     ap.add_argument("--mesh", default="tiny")
     ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--max-iterations", type=int, default=1500,
+                    help="iteration limit of each case (the gap study's 1500; the loss holds within "
+                         "1.5 %% from iteration 500 on at g = 0.08 D_w)")
     ap.add_argument("--report", action="store_true", help="only re-read the stored rows")
     args = ap.parse_args(argv)
     command = "benchmarks/cfd_three_answers.py " + " ".join(sys.argv[1:] if argv is None else argv)
@@ -131,7 +134,7 @@ def main(argv: list[str] | None = None) -> int:
     for rpm in args.speeds:
         t0 = time.monotonic()
         r = {"speed_rpm": rpm, "gap_ratio": args.gap, "cells_across_gap": args.cells, "mesh": args.mesh,
-             **run_cfd(rpm, args.gap, args.cells, args.mesh, args.np)}
+             **run_cfd(rpm, args.gap, args.cells, args.mesh, args.np, args.max_iterations)}
         r.update(correlations_and_contact(rpm, r["gap_m"]))
         r["session_wall_s"] = time.monotonic() - t0
         rows.append(r)
