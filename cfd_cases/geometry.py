@@ -23,7 +23,7 @@ Solids (cut out of the fluid):
   (``benchmarks/cfd_gap_study.py``) varies ``g``; the mesh puts ``CELLS_ACROSS_GAP`` cells
   across its narrowest point. The flat large end replaces the spherical one (R_e = 139 mm for the
   32208: 0.1 um of crown over the end face). The roller end / rib film (tens of micrometres)
-  and the real pocket clearance (0.02 D_w) are opened to the clearance ``c = clearance_ratio *
+  and the real pocket clearance (0.01 D_w per side, half the data's total) are opened to the clearance ``c = clearance_ratio *
   D_w`` (0.08 D_w by default; at least the real pocket clearance);
 - cage: a pressed-steel window cage as a conical shell parallel to the roller axes, its
   mid-surface ``CAGE_OFFSET_RATIO * D_w`` outside the roller axes (toward the cup, as in
@@ -174,8 +174,9 @@ def cfd_geometry(g: BearingGeometry, *, housing_clearance_m: float | None = None
         real roller stands ``g`` off it along the contact line (the contact model owns the film
         below ``g``).
     clearance_ratio
-        Roller-end / rib and cage-pocket clearance ``c / D_w`` (the real pocket clearance is
-        ``cage_pocket_clearance_*``; the CFD opens both to ``c`` where ``c`` is larger).
+        Roller-end / rib and cage-pocket clearance ``c / D_w`` per side (the real pocket
+        clearance ``cage_pocket_clearance_*`` is the total over both sides; the CFD opens both
+        to ``c`` where ``c`` is larger than half of it).
     sector
         One roller pitch (``2 pi / Z``) around roller 0 with periodic sides, for a flow that is
         periodic in the cage frame (flooded, no gravity).
@@ -191,7 +192,8 @@ def cfd_geometry(g: BearingGeometry, *, housing_clearance_m: float | None = None
         if not (isinstance(value, (int, float)) and math.isfinite(value) and lo <= value <= hi):
             raise ValueError(f"{name} = {value!r}: expected a fraction of the roller diameter in [{lo}, {hi}]")
     gap = gap_ratio * Dw
-    clear = max(clearance_ratio * Dw, g.cage_pocket_clearance_circumferential_m)
+    # the bearing data's pocket clearance is the total over both sides of the roller: half per side
+    clear = max(clearance_ratio * Dw, 0.5 * g.cage_pocket_clearance_circumferential_m)
     R_h, r_s = 0.5 * g.outer_diameter_m, 0.5 * g.bore_diameter_m
     # cup: the raceway cone set back by the gap (outward), extended over the cup width
     o_se, o_le = np.array(g.outer_raceway_small_end_m), np.array(g.outer_raceway_large_end_m)
