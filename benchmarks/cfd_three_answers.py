@@ -2,7 +2,8 @@
 
 For each speed: contact + CFD (the contact's rolling force cut off where the film reaches the
 gap g that the CFD opens, :func:`kegel.supply.contact_loss_at_film_limit`, plus the CFD loss of a
-flooded one-pitch sector at g with ``--cells`` cells across each gap), contact + Liebrecht and
+flooded one-pitch sector at g with ``--cells`` cells across each gap, plus the analytic
+thin-film terms of the films thinner than the CFD's clearance), contact + Liebrecht and
 contact + SKF drag (the uncut flooded contact, the correlation's whole hydraulic loss). The CFD
 cases are those of the gap study (``benchmarks/cfd_gap_study.py``, same folder and names), so the
 2000 rpm case is shared and every case resumes where a session left it.
@@ -75,12 +76,32 @@ def correlations_and_contact(speed_rpm: float, gap_m: float) -> dict:
             "liebrecht_Nm": hyd["liebrecht"], "skf_drag_Nm": hyd["skf"]}
 
 
+def thin_films_Nm(row: dict) -> float:
+    """The analytic thin-film terms of a row's CFD case (roller end / rib film and pockets at
+    their real clearances, :mod:`kegel.cfd_cases.thin_films`): from its results.json, or computed
+    for a case run before they were written there."""
+    from kegel.cfd_cases.run import CfdPoint, thin_film_json
+
+    case = CASES / row["case"]
+    data = json.loads((case / "results.json").read_text())
+    if data.get("thin_film_loss_Nm") is not None:
+        return float(data["thin_film_loss_Nm"])
+    p = CfdPoint(bearing="32208", speed_rad_s=row["speed_rpm"] * math.pi / 30, temperature_K=TEMPERATURE_K,
+                 oil_level_m=None, mesh=row["mesh"], gap_ratio=row["gap_ratio"],
+                 cells_across_gap=row["cells_across_gap"], sector=True)
+    meta = json.loads((case / "kegel-case.json").read_text())
+    return float(thin_film_json(p, meta)["loss_torque_Nm"])
+
+
 def write(rows: list[dict], command: str) -> None:
     import kegel
     from kegel.io import atomic_write_json, provenance
 
     for r in rows:
+        if "thin_films_Nm" not in r:
+            r["thin_films_Nm"] = thin_films_Nm(r)
         r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"]
+        r["contact_plus_cfd_plus_thin_films_Nm"] = r["contact_plus_cfd_Nm"] + r["thin_films_Nm"]
         r["contact_plus_liebrecht_Nm"] = r["contact_uncut_Nm"] + r["liebrecht_Nm"]
         r["contact_plus_skf_Nm"] = r["contact_uncut_Nm"] + r["skf_drag_Nm"]
     atomic_write_json(OUT, {"command": command, "point": "32208, FVA 3, 50 degC, flooded, Fa = 1 kN",
@@ -97,7 +118,9 @@ def plot(rows: list[dict], path: Path) -> None:
     rows = sorted(rows, key=lambda r: r["speed_rpm"])
     n = [r["speed_rpm"] for r in rows]
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o-", label="contact (cut at g) + CFD")
+    ax.plot(n, [1e3 * r["contact_plus_cfd_plus_thin_films_Nm"] for r in rows], "o-",
+            label="contact (cut at g) + CFD + thin films")
+    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o--", label="contact (cut at g) + CFD")
     ax.plot(n, [1e3 * r["contact_plus_liebrecht_Nm"] for r in rows], "s--", label="contact + Liebrecht")
     ax.plot(n, [1e3 * r["contact_plus_skf_Nm"] for r in rows], "^--", label="contact + SKF drag")
     ax.plot(n, [1e3 * r["cfd_loss_Nm"] for r in rows], "o:", label="CFD alone (beyond g)")
