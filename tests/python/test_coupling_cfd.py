@@ -308,7 +308,10 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     assert h["bodies_share_in_the_cfd_Nm"] + rings == pytest.approx(loss, rel=1e-12)
     slip = abs(dyn["cage_slip"])
     assert abs(h["roller_drag_on_the_bodies_Nm"] / h["bodies_share_in_the_cfd_Nm"] - 1) <= 2.1 * slip + 2e-3
-    # the output interval: the steady figures are time integrals (quadratures), not samples
+    # the output interval: the steady figures are time integrals (quadratures), not samples; what
+    # remains is the integrator's own error where its steps stop at other output times (1.1e-5
+    # at the velocity tolerance 1e-7 m/s, kegel.dynamics.ATOL_VELOCITY_M_S; a sampled mean would
+    # differ by the torque ripple, about 1e-2)
     coarse = _run(tmp_path, "coarse", _scene("dynamic", interval="2 ms", level=level))
     for k in ("cage_slip", "friction_torque_Nm", "hydraulic_torque_Nm", "total_torque_Nm"):
-        assert coarse[k] == pytest.approx(dyn[k], rel=1e-5, abs=1e-9), k
+        assert coarse[k] == pytest.approx(dyn[k], rel=3e-5, abs=1e-9), k
