@@ -49,16 +49,16 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
-from .errors import KegelInputError
-from .units import KINDS, parse_quantity
+from .model.data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
+from .base.errors import KegelInputError
+from .base.units import KINDS, parse_quantity
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas
     from matplotlib.figure import Figure
 
-    from .geometry import BearingGeometry
-    from .scene import Scene
+    from .model.geometry import BearingGeometry
+    from .model.scene import Scene
 
 __all__ = ["Bearing", "FrictionResult"]
 
@@ -140,7 +140,7 @@ class Bearing:
 
     def __init__(self, designation: str | Path, *, lubricant: str | Path = "FVA3",
                  material: str | Path = "bearing_steel", fidelity: str = "default") -> None:
-        from .scene import FIDELITY_PRESETS
+        from .model.scene import FIDELITY_PRESETS
 
         self._designation = _name_argument(designation, "designation", "a bearing designation such as '32216' or "
                                            "the path of a bearing .toml file")
@@ -164,7 +164,7 @@ class Bearing:
     @cached_property
     def geometry(self) -> "BearingGeometry":
         """The bearing's derived internal geometry (:func:`kegel.derive_geometry`)."""
-        from .geometry import derive_geometry
+        from .model.geometry import derive_geometry
 
         return derive_geometry(self.data, self.material)
 
@@ -259,8 +259,8 @@ class Bearing:
             A bad argument (wrong unit, bare number, out of range, unknown word); the message
             names it.
         """
-        from .run import run_scene
-        from .scene import scene_from_dict
+        from .runner.run import run_scene
+        from .model.scene import scene_from_dict
 
         args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "scene_from_dict", "uncertainty")}
         raw = self.scene(**args)
@@ -458,7 +458,7 @@ class FrictionResult:
             matplotlib.use("Agg")  # writing a file needs no window
         import matplotlib.pyplot as plt
 
-        from .plots import PlotMeta, build_figures, check_figure_path, save_figure
+        from .outputs.plots import PlotMeta, build_figures, check_figure_path, save_figure
 
         keys = {"torque": "torque_plot", "breakdown": "breakdown_plot", "loads": "loads_plot"}
         if which not in keys:
@@ -673,7 +673,7 @@ def _as_argument_error(exc: KegelInputError, used: dict[str, str] | None = None)
 def _with_skf_drag(scene: "Scene", point: dict[str, Any]) -> dict[str, Any]:
     """A point's record with the SKF drag moment as its hydraulic loss (as a study adds it)."""
     from .correlations import hydraulic_torques
-    from .lubricant import lubricant_state
+    from .model.lubricant import lubricant_state
 
     state = lubricant_state(scene.lubricant, point["temperature_K"], source=scene.source, key="temperature")
     h = hydraulic_torques("skf", scene.geometry, state, shaft_speed_rad_s=point["speed_rad_s"],

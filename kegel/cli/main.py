@@ -32,12 +32,12 @@ import time
 from pathlib import Path
 from typing import Any, Sequence
 
-from .data import load_bearing, load_lubricant, load_material
-from .errors import KegelInputError, KegelSolverError
-from .geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
-from .lubricant import lubricant_state
-from .scene import Scene, check_speed, load_scene
-from .units import parse_quantity
+from ..model.data import load_bearing, load_lubricant, load_material
+from ..base.errors import KegelInputError, KegelSolverError
+from ..model.geometry import apex_residual, derive_geometry, envelope_violations, geometry_table
+from ..model.lubricant import lubricant_state
+from ..model.scene import Scene, check_speed, load_scene
+from ..base.units import parse_quantity
 
 __all__ = ["main"]
 
@@ -131,7 +131,7 @@ def _cmd_lubricant(args: argparse.Namespace) -> int:
 
 
 def _cmd_tribology(args: argparse.Namespace) -> int:
-    from .tribology import axial_roller_loads, evaluate_raceway_contact, load_friction
+    from ..physics.tribology import axial_roller_loads, evaluate_raceway_contact, load_friction
 
     src = "command line"
     bearing = load_bearing(args.bearing, source=src, key="--bearing")
@@ -205,10 +205,10 @@ def _cmd_tribology(args: argparse.Namespace) -> int:
 def _cmd_losses(args: argparse.Namespace) -> int:
     import numpy as np
 
-    from .correlations import hydraulic_torques
-    from .correlations.skf import SkfBearing, skf_bearing, skf_friction, skf_oil_level_H_m
-    from .plots import check_figure_path
-    from .scene import resolve_oil_level
+    from ..correlations import hydraulic_torques
+    from ..correlations.skf import SkfBearing, skf_bearing, skf_friction, skf_oil_level_H_m
+    from ..outputs.plots import check_figure_path
+    from ..model.scene import resolve_oil_level
 
     src = "command line"
     if args.plot:
@@ -269,7 +269,7 @@ def _cmd_losses(args: argparse.Namespace) -> int:
                                       "rolling_sliding_Nm": math.copysign(f.rolling_sliding_Nm, w),
                                       "phi_ish": f.phi_ish, "phi_rs": f.phi_rs, "phi_bl": f.phi_bl, "mu_sl": f.mu_sl}
             else:
-                from .correlations.skf import skf_drag_moment
+                from ..correlations.skf import skf_drag_moment
 
                 d = skf_drag_moment(sb, speed_rad_s=abs(w), kinematic_viscosity_m2_s=state.kinematic_viscosity_m2_s,
                                     oil_level_m=h, edition=args.skf_edition)
@@ -350,7 +350,7 @@ def _cmd_losses(args: argparse.Namespace) -> int:
                        None if c["angular_momentum_balance"] is None else 100 * c["angular_momentum_balance"],
                        mm(c["liebrecht_total_Nm"]), mm(c["skf_drag_Nm"]),
                        None if c["wall_time_s"] is None else c["wall_time_s"] / 60, c["file"]) for c in cfd_rows])
-        from .coupling.cfd_results import BALANCE_LIMIT
+        from ..coupling.cfd_results import BALANCE_LIMIT
 
         off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None
                and abs(c["angular_momentum_balance"]) > BALANCE_LIMIT]
@@ -373,9 +373,9 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
     (solver run plus meshing; the whole chain for a run started on a coarser mesh)."""
     import json as _json
 
-    from .correlations import hydraulic_torques
-    from .correlations.skf import skf_drag_moment
-    from .coupling.cfd_results import TEMPERATURE_TOLERANCE_K, balance_of, read_cfd_results
+    from ..correlations import hydraulic_torques
+    from ..correlations.skf import skf_drag_moment
+    from ..coupling.cfd_results import TEMPERATURE_TOLERANCE_K, balance_of, read_cfd_results
 
     out = []
     for path in paths:
@@ -459,7 +459,7 @@ def _plot_losses(rows: list[dict[str, Any]], skf_rows: list[dict[str, Any]], g, 
     fig.suptitle(f"{g.designation}, {lubricant} at {T - 273.15:g} degC: Liebrecht (Eq. 38-40, 1/min), SKF drag"
                  + (" and kegel CFD" if cfd_rows else ""))
     fig.tight_layout()
-    from .io import atomic_save
+    from ..base.io import atomic_save
 
     try:
         atomic_save(path, lambda tmp: fig.savefig(tmp, dpi=120))
@@ -493,7 +493,7 @@ def _scene_summary(scene: Scene) -> dict[str, Any]:
 
 
 def _cmd_validate(args: argparse.Namespace) -> int:
-    from .validation import print_report, run_validation
+    from ..runner.validation import print_report, run_validation
 
     result = run_validation(args.output, progress=sys.stderr.isatty())
     print_report(result)
@@ -501,7 +501,7 @@ def _cmd_validate(args: argparse.Namespace) -> int:
 
 
 def _cmd_list(args: argparse.Namespace) -> int:
-    from .inventory import KINDS, inventory
+    from ..model.inventory import KINDS, inventory
 
     kinds = [args.kind] if args.kind else list(KINDS)
     data = {k: inventory(k) for k in kinds}
@@ -521,7 +521,7 @@ def _cmd_list(args: argparse.Namespace) -> int:
 
 
 def _cmd_init(args: argparse.Namespace) -> int:
-    from .inventory import write_scene_template
+    from ..model.inventory import write_scene_template
 
     path = write_scene_template(args.file, bearing=args.bearing, lubricant=args.lubricant, force=args.force)
     if args.format == "json":
@@ -532,7 +532,7 @@ def _cmd_init(args: argparse.Namespace) -> int:
 
 
 def _cmd_check(args: argparse.Namespace) -> int:
-    from .run import preflight
+    from ..runner.run import preflight
 
     scene = load_scene(args.scene, args.set or ())
     preflight(scene)  # what kegel run checks before its first point (each point's CFD result)
@@ -550,18 +550,18 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_run(args: argparse.Namespace) -> int:
-    from .run import run_scene
+    from ..runner.run import run_scene
 
     scene = load_scene(args.scene, args.set or ())
     out_dir = Path(args.output) if args.output else scene.output_directory
     options = None
     if args.uncertainty:
-        from .uncertainty import UncertaintyOptions
+        from ..runner.uncertainty import UncertaintyOptions
 
         options = UncertaintyOptions(crown_drop_fraction=args.crown_drop)
     client = None
     if args.scheduler:  # a Dask cluster solves the points (kegel.parallel)
-        from .parallel import connect
+        from ..runner.parallel import connect
 
         client = connect(args.scheduler)
     try:
@@ -725,7 +725,7 @@ def _print_study(points: list[dict[str, Any]]) -> None:
 
 
 def _parser() -> argparse.ArgumentParser:
-    from . import __version__
+    from ..base.version import __version__
 
     p = argparse.ArgumentParser(prog="kegel", description="Power losses of tapered roller bearings.")
     p.add_argument("--version", action="version", version=f"kegel {__version__}")
@@ -735,7 +735,7 @@ def _parser() -> argparse.ArgumentParser:
         sp.add_argument("--format", choices=("table", "json"), default="table",
                         help="table for people, json for programs (default: table)")
 
-    from .inventory import KINDS
+    from ..model.inventory import KINDS
 
     li = sub.add_parser("list", help="what kegel ships with: bearings, lubricants, materials, friction sets, "
                                      "validation data, example scenes")
@@ -807,7 +807,7 @@ def _parser() -> argparse.ArgumentParser:
     common(lo)
     lo.set_defaults(func=_cmd_losses)
 
-    from .cfd_cases.cli import add_cfd_parser
+    from ..cfd_cases.cli import add_cfd_parser
 
     add_cfd_parser(sub, common)
 
@@ -846,7 +846,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``kegel`` command; returns the exit status."""
-    from .point_warnings import warnings_once_per_command
+    from ..outputs.point_warnings import warnings_once_per_command
 
     args = _parser().parse_args(argv)
     try:
@@ -875,7 +875,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"kegel: error: cannot write {where}{exc.strerror or exc}", file=sys.stderr)
         return 1
     except RuntimeError as exc:
-        from .cfd_cases.foam import FoamError, FoamInterrupted
+        from ..cfd_cases.foam import FoamError, FoamInterrupted
 
         if not isinstance(exc, FoamError):
             raise

@@ -87,16 +87,14 @@ from typing import Any
 
 import numpy as np
 
-from ._toml import read_toml
+from ..base._toml import read_toml
 from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene, load_bearing, load_lubricant,
                    load_material, lubricant_from_scene)
-from .errors import KegelInputError
+from ..base.errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
-from .quasi_static import MAX_SLICES
-from .supply import SUPPLY_MODELS
-from .tribology import ROLLING_THERMAL_MODELS
-from .units import RPM_TO_RAD_S, parse_quantity
+from .options import MAX_SLICES, ROLLING_THERMAL_MODELS, SUPPLY_MODELS
+from ..base.units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
     "HYDRAULIC_METHODS",
