@@ -5,18 +5,21 @@ function level and ``TYPE_CHECKING`` blocks), for the import package ``kegel`` a
 it (pyproject.toml ``[tool.scikit-build.wheel.packages]``: ``kegel/`` plus the top-level folders
 ``correlations/``, ``coupling/`` and ``cfd_cases/``). Checked:
 
-- every kegel module an import names exists (a relative import that moved with its file, or an
-  old path such as ``kegel.scene`` inside the package, fails here with file and line);
+- every kegel module an import names exists (a relative import that moved with its file fails
+  here with file and line), and package code names the new paths, not the old ones such as
+  ``kegel.scene`` (``python tests/python/test_architecture.py --fix`` rewrites both);
 - every package has a layer (a new module goes into a package: docs/architecture.md says which);
 - no import runs from a lower layer to a higher one;
 - the graph of packages has no cycle (packages of one layer may import each other one way).
 
-No kegel import is executed: the test reads files only.
+No kegel import is executed (but in the test of the old paths): the test reads files only.
 """
 
 from __future__ import annotations
 
 import ast
+import re
+import sys
 import tomllib
 from collections import defaultdict
 from pathlib import Path
@@ -38,6 +41,15 @@ LAYERS: list[tuple[str, tuple[str, ...]]] = [
     ("front", ("kegel",)),
 ]
 LAYER_OF: dict[str, int] = {pkg: i for i, (_, pkgs) in enumerate(LAYERS) for pkg in pkgs}
+
+
+def moved() -> dict[str, str]:
+    """``kegel._compat.MOVED`` (old module path -> new), read from the file, not imported."""
+    tree = ast.parse((ROOT / "kegel" / "_compat.py").read_text(encoding="utf-8"))
+    for node in tree.body:
+        if isinstance(node, ast.AnnAssign) and getattr(node.target, "id", "") == "MOVED":
+            return ast.literal_eval(node.value)
+    raise AssertionError("kegel/_compat.py has no MOVED")
 
 
 def source_dirs() -> dict[str, Path]:
@@ -95,10 +107,11 @@ def package_of(module: str) -> str:
     return ".".join(parts[:2])
 
 
-def back_up_imports(edges, layer_of) -> list[str]:
-    """Imports from a lower layer to a higher one."""
+def back_up_imports(edges, layer_of, old: dict[str, str] | None = None) -> list[str]:
+    """Imports from a lower layer to a higher one (an old module path counts as its new one)."""
     bad = []
     for src, dst, where in edges:
+        dst = (old or {}).get(dst, dst)
         a, b = layer_of.get(package_of(src)), layer_of.get(package_of(dst))
         if a is not None and b is not None and b > a:
             bad.append(f"{where}: {src} (layer {LAYERS[a][0] if a < len(LAYERS) else a}) imports {dst} "
@@ -106,11 +119,11 @@ def back_up_imports(edges, layer_of) -> list[str]:
     return bad
 
 
-def package_cycles(edges) -> list[list[str]]:
+def package_cycles(edges, old: dict[str, str] | None = None) -> list[list[str]]:
     """The strongly connected components of more than one package (Tarjan)."""
     graph: dict[str, set[str]] = defaultdict(set)
     for src, dst, _ in edges:
-        a, b = package_of(src), package_of(dst)
+        a, b = package_of(src), package_of((old or {}).get(dst, dst))
         if a != b:
             graph[a].add(b)
             graph.setdefault(b, set())
@@ -155,10 +168,19 @@ def graph():
 
 def test_every_imported_kegel_module_exists(graph):
     mods, edges = graph
-    missing = sorted({f"{where}: imports {dst}" for _, dst, where in edges if dst not in mods})
+    old = moved()
+    missing = sorted({f"{where}: imports {dst}" for _, dst, where in edges if dst not in mods and dst not in old})
     assert not missing, ("imports of kegel modules that do not exist (a relative import that moved with its "
-                         "file, or a path of before the relayout: kegel._compat.MOVED has the new one):\n"
-                         + "\n".join(missing))
+                         "file? `python tests/python/test_architecture.py --fix` rewrites it):\n" + "\n".join(missing))
+
+
+def test_package_code_uses_the_new_module_paths(graph):
+    """kegel._compat keeps the old paths (``kegel.scene``) for users; the package names the new ones."""
+    _, edges = graph
+    old = moved()
+    used = sorted({f"{where}: {dst} (now {old[dst]})" for _, dst, where in edges if dst in old})
+    assert not used, ("module paths of before the relayout inside the package "
+                      "(`python tests/python/test_architecture.py --fix` rewrites them):\n" + "\n".join(used))
 
 
 def test_every_package_has_a_layer(graph):
@@ -170,13 +192,13 @@ def test_every_package_has_a_layer(graph):
 
 def test_no_import_runs_back_up_the_layers(graph):
     _, edges = graph
-    bad = back_up_imports(edges, LAYER_OF)
+    bad = back_up_imports(edges, LAYER_OF, moved())
     assert not bad, "imports from a lower layer to a higher one:\n" + "\n".join(bad)
 
 
 def test_the_package_graph_has_no_cycle(graph):
     _, edges = graph
-    assert package_cycles(edges) == []
+    assert package_cycles(edges, moved()) == []
 
 
 def test_the_layers_cover_the_documented_packages():
@@ -209,3 +231,62 @@ def test_old_module_paths_still_import():
         assert importlib.import_module(old) is importlib.import_module(new), old
     assert kegel.run is importlib.import_module("kegel.runner.run")
     assert importlib.import_module("kegel.scene").__spec__.name == "kegel.model.scene"
+
+
+def fix(write: bool = True) -> list[str]:
+    """Rewrite the ``from X import`` of package code that names an old module path
+    (``kegel.scene``, ``..scene``) or a relative path that moved with its file (``.limits`` in
+    ``kegel/physics/``, meant as ``kegel.limits``) to the new path; returns what it changed and
+    what it left (``import kegel.x`` and ``from kegel import x``: by hand)."""
+    mods, old = modules(), moved()
+    by_file: dict[Path, list[tuple[int, int, str]]] = defaultdict(list)
+    report = []
+    for name, (path, is_pkg) in mods.items():
+        if name == "kegel._core":
+            continue
+        package = name if is_pkg else name.rpartition(".")[0]
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
+            if not isinstance(node, (ast.Import, ast.ImportFrom)):
+                continue
+            where = f"{path.relative_to(ROOT)}:{node.lineno}"
+            if isinstance(node, ast.Import):
+                report += [f"{where}: import {a.name}: by hand (now {old[a.name]})" for a in node.names if a.name in old]
+                continue
+            if node.level:
+                up = package.split(".")[: len(package.split(".")) - node.level + 1]
+                target = ".".join(up + ([node.module] if node.module else []))
+            else:
+                target = node.module or ""
+            if target.split(".")[0] != "kegel" or target in mods:
+                if any(f"{target}.{a.name}" in old for a in node.names):
+                    report.append(f"{where}: from {target} import ...: by hand (a moved module imported by name)")
+                continue
+            new = old.get(target) or old.get("kegel." + target.rpartition(".")[2])
+            if new is None or new not in mods:
+                report.append(f"{where}: {target}: no new path known")
+                continue
+            if node.level:
+                p, t = package.split("."), new.split(".")
+                n = 0
+                while n < min(len(p), len(t)) and p[n] == t[n]:
+                    n += 1
+                spec = "." * (len(p) - n + 1) + ".".join(t[n:])
+            else:
+                spec = new
+            by_file[path].append((node.lineno, node.col_offset, spec))
+            report.append(f"{where}: {target} -> {spec}")
+    if write:
+        for path, edits in by_file.items():
+            lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
+            for lineno, col, spec in edits:
+                line = lines[lineno - 1]
+                m = re.compile(r"from\s+(\.+[\w.]*|[\w.]+)\s+import").match(line, col)
+                lines[lineno - 1] = line[:m.start(1)] + spec + line[m.end(1):]
+            path.write_text("".join(lines), encoding="utf-8")
+    return report
+
+
+if __name__ == "__main__":  # python tests/python/test_architecture.py --fix  (or --dry-run)
+    if sys.argv[1:] not in (["--fix"], ["--dry-run"]):
+        sys.exit("usage: python tests/python/test_architecture.py --fix | --dry-run")
+    print("\n".join(fix(write=sys.argv[1] == "--fix")) or "nothing to fix")
