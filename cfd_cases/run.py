@@ -789,10 +789,16 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     if not point.flooded:
         fidelity.update(max_courant=point.max_courant, max_interface_courant=point.max_interface_courant,
                         initial_state=meta.get("initial_state"))
+    thin = thin_film_json(point, meta)
     out = {"provenance": provenance(), "fidelity": fidelity,
            "point": result.point, "kinematics": kin, "runtime_s": result.runtime_s,
            "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,
            "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
+           # the films thinner than the CFD's clearance, as analytic terms (thin_films); the CFD's
+           # own numbers above are unchanged
+           "thin_film_loss_Nm": thin["loss_torque_Nm"], "thin_films": thin,
+           "loss_torque_at_shaft_with_thin_films_Nm": (None if thin["loss_torque_Nm"] is None else
+                                                       result.loss_torque_at_shaft_Nm + thin["loss_torque_Nm"]),
            "averaging_window": list(result.window_s), "steady": result.steady,
            "stopped_by": result.stopped_by,
            **({} if restart is None else {"restart_state_time_s": restart}),
@@ -806,6 +812,25 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            "on the body from the oil; power_loss_W = -(sum over moving bodies of F.v + M.omega)"}
     atomic_write_json(case / "results.json", out)
     return result
+
+
+def thin_film_json(point: CfdPoint, meta: dict[str, Any]) -> dict[str, Any]:
+    """The analytic terms of the films thinner than the CFD's clearance ``c`` (roller end / rib,
+    cage pockets; :func:`kegel.cfd_cases.thin_films.thin_film_losses`) for ``results.json``.
+    Flooded points only: the terms assume full films; an oil bath gets ``loss_torque_Nm: None``
+    and the reason."""
+    if not point.flooded:
+        return {"loss_torque_Nm": None, "not_evaluated": "oil bath: the thin-film terms assume full films "
+                                                         "(flooded points only)"}
+    from .thin_films import thin_film_losses
+
+    bearing, g, _ = _load(point)
+    c = meta.get("geometry", {}).get("clearance_m")
+    if c is None:
+        c = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m, gap_ratio=point.gap_ratio,
+                         clearance_ratio=point.clearance_ratio).clearance_m
+    return thin_film_losses(g, bearing, lubricant=point.lubricant, temperature_K=point.temperature_K,
+                            inner_speed_rad_s=abs(point.speed_rad_s), clearance_m=float(c), material=point.material)
 
 
 def last_write_at_or_before(times: list[Path], t_s: float) -> Path | None:

@@ -31,6 +31,7 @@ MOVED: dict[str, str] = {
     "kegel.geometry": "kegel.model.geometry",
     "kegel.lubricant": "kegel.model.lubricant",
     "kegel.scene": "kegel.model.scene",
+    "kegel.scene_model": "kegel.model.scene_model",
     "kegel.inventory": "kegel.model.inventory",
     "kegel.tribology": "kegel.physics.tribology",
     "kegel.contact": "kegel.physics.contact",

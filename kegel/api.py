@@ -18,10 +18,12 @@ quantity. A bare number is refused unless the keyword names its unit: ``speed_rp
 ``axial_offset_um`` (``speed=200`` was read as 200 rad/s, 1910 rpm). A list of values sweeps that
 quantity (several lists: every combination, speed varying fastest).
 
-The facade is a thin layer over the scene machinery: it writes the scene dictionary a scene file
-would hold (:mod:`kegel.scene`), validates it with :func:`kegel.scene.scene_from_dict` and solves
-it with :func:`kegel.run.run_scene` in memory (no files). A result therefore equals that of the
-equivalent scene file, and bad input raises :class:`kegel.KegelInputError` naming the argument.
+The facade is a thin layer over the scene machinery: it builds the typed scene model a scene
+file would give (:class:`kegel.scene_model.SceneSpec`, :meth:`Bearing.spec`; each quantity read
+once), validates it with the scenes' one validation layer (:func:`kegel.scene.validate_scene`)
+and solves it with :func:`kegel.run.run_scene` in memory (no files). A result therefore equals
+that of the equivalent scene file, and bad input raises :class:`kegel.KegelInputError` naming the
+argument as it was given (``speed_rpm[1]``).
 
 Hydraulic losses of an oil bath: ``hydraulic=None`` takes the scene's default (Liebrecht's
 correlation, seed paper Eq. 38-40, for an oil bath; none for minimum-quantity lubrication);
@@ -59,6 +61,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from .model.geometry import BearingGeometry
     from .model.scene import Scene
+    from .model.scene_model import LubricationSpec, OperatingSpec, SceneSpec, Sweep
 
 __all__ = ["Bearing", "FrictionResult"]
 
@@ -172,14 +175,53 @@ class Bearing:
         return (f"Bearing({self.designation!r}, lubricant={self.lubricant.name!r}, material={self.material.name!r}, "
                 f"fidelity={self.fidelity!r})")
 
+    def spec(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None, radial_load: Any = None,
+             axial_offset: Any = None, lubrication: Any = "half_roller", hydraulic: str | None = None,
+             speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
+             temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
+             radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
+             axial_offset_um: Any = None) -> "SceneSpec":
+        """The typed scene model (:class:`kegel.scene_model.SceneSpec`) that :meth:`friction`
+        validates and solves; the arguments are those of :meth:`friction`. Each quantity is read
+        once, by the grammar of :mod:`kegel.units`; a scene file with the same values gives an
+        equal model.
+
+        Raises
+        ------
+        KegelInputError
+            An argument that is not what it should be (type, unit, grammar, word); the message
+            names it. Ranges and cross-checks: :func:`kegel.scene.validate_scene`.
+        """
+        from .model.scene_model import BearingSpec, LubricantSpec, ModelOptions, SceneSpec
+
+        given = {k: v for k, v in locals().items() if k in _QUANTITIES or k in UNIT_KEYWORDS}
+        operating, texts = _operating_spec(given)
+        lub = _lubrication_spec(lubrication)
+        method = _hydraulic_method(hydraulic, lub.mode)
+        model_table: dict[str, Any] = {"fidelity": self.fidelity}
+        if hydraulic is not None:
+            model_table["hydraulic"] = {"none": "none", "liebrecht": "correlation", "skf": "none"}[method]
+        model = ModelOptions(fidelity=self.fidelity, hydraulic=model_table.get("hydraulic"),
+                             written=tuple(model_table.items()))
+        lub_table: dict[str, Any] = {"mode": lub.mode}
+        if lub.oil_level is not None:
+            lub_table["oil_level"] = (lub.written if isinstance(lub.written, str) else f"{lub.oil_level!r} m")
+        bearing = {"designation": self._designation, "material": self._material}
+        name = f"{self.designation}, kegel.Bearing.friction"
+        raw = {"scene": {"name": name}, "bearing": dict(bearing), "lubricant": {"name": self._lubricant},
+               "operating": texts, "lubrication": lub_table, "model": model_table}
+        return SceneSpec(name=name, description="", bearing=BearingSpec.of(bearing),
+                         lubricant=LubricantSpec.of({"name": self._lubricant}), operating=operating,
+                         lubrication=lub, model=model, source=_SOURCE_FRICTION, raw=raw)
+
     def scene(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None, radial_load: Any = None,
               axial_offset: Any = None, lubrication: Any = "half_roller", hydraulic: str | None = None,
               speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
               temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
               radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
               axial_offset_um: Any = None) -> dict[str, Any]:
-        """The scene dictionary (the content of a scene file, see :mod:`kegel.scene`) that
-        :meth:`friction` solves; the arguments are those of :meth:`friction`.
+        """The scene dictionary (the content of a scene file, see :mod:`kegel.scene`) of
+        :meth:`spec`: written as a scene file, it loads into an equal typed model.
 
         With ``hydraulic="skf"`` the scene has an oil bath and no hydraulic loss
         (``model.hydraulic = "none"``): :meth:`friction` adds the SKF drag to its points.
@@ -189,21 +231,8 @@ class Bearing:
         KegelInputError
             An argument that is not what it should be; the message names it.
         """
-        given = {k: v for k, v in locals().items() if k in _QUANTITIES or k in UNIT_KEYWORDS}
-        operating = _operating_table(given)
-        lub_table = _lubrication_table(lubrication)
-        model: dict[str, Any] = {"fidelity": self.fidelity}
-        method = _hydraulic_method(hydraulic, lub_table)
-        if hydraulic is not None:
-            model["hydraulic"] = {"none": "none", "liebrecht": "correlation", "skf": "none"}[method]
-        return {
-            "scene": {"name": f"{self.designation}, kegel.Bearing.friction"},
-            "bearing": {"designation": self._designation, "material": self._material},
-            "lubricant": {"name": self._lubricant},
-            "operating": operating,
-            "lubrication": lub_table,
-            "model": model,
-        }
+        args = {k: v for k, v in locals().items() if k != "self"}
+        return self.spec(**args).raw
 
     def friction(self, speed: Any = None, axial_load: Any = None, *, temperature: Any = None,
                  radial_load: Any = None, axial_offset: Any = None, lubrication: Any = "half_roller",
@@ -260,17 +289,15 @@ class Bearing:
             names it.
         """
         from .runner.run import run_scene
-        from .model.scene import scene_from_dict
+        from .model.scene import validate_scene
 
-        args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "scene_from_dict", "uncertainty")}
-        raw = self.scene(**args)
-        used = {q: next((k for k in (q, *(u for u, (uq, _) in UNIT_KEYWORDS.items() if uq == q))
-                         if args.get(k) is not None), q) for q in _QUANTITIES}
-        method = _hydraulic_method(hydraulic, raw["lubrication"])
+        args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "validate_scene", "uncertainty")}
+        spec = self.spec(**args)
+        method = _hydraulic_method(hydraulic, spec.lubrication.mode)
         try:
-            scene = scene_from_dict(raw, source=_SOURCE_FRICTION)
+            scene = validate_scene(spec)
         except KegelInputError as exc:
-            raise _as_argument_error(exc, used) from None
+            raise _as_argument_error(exc) from None
         run = run_scene(scene, write=False, progress=False, uncertainty=uncertainty)
         points = run.points
         if method == "skf":
@@ -520,10 +547,14 @@ def _name_argument(value: Any, name: str, expected: str) -> str:
     return str(value)
 
 
-def _operating_table(given: dict[str, Any]) -> dict[str, Any]:
-    """The ``[operating]`` table of the scene from the quantity arguments (``given``: every
-    quantity keyword and unit-named keyword with its value, None when not given)."""
-    values: dict[str, Any] = {}
+def _operating_spec(given: dict[str, Any]) -> tuple["OperatingSpec", dict[str, Any]]:
+    """The typed ``[operating]`` table from the quantity arguments (``given``: every quantity
+    keyword and unit-named keyword with its value, None when not given), each value read once;
+    and the table as a scene file would write it."""
+    from .model.scene_model import OperatingSpec
+
+    sweeps: dict[str, Sweep] = {}
+    texts: dict[str, Any] = {}
     for name in _QUANTITIES:
         keys = [name, *(k for k, (q, _) in UNIT_KEYWORDS.items() if q == name)]
         present = [k for k in keys if given.get(k) is not None]
@@ -532,25 +563,26 @@ def _operating_table(given: dict[str, Any]) -> dict[str, Any]:
                                   f"one of {', '.join(keys)}, not both {present[0]} and {present[1]}")
         if not present:
             if name in _DEFAULTS:
-                values[name] = _DEFAULTS[name]
+                sweeps[name], texts[name] = _quantity_sweep(_DEFAULTS[name], name, name)
             continue
         key = present[0]
         if key == name:
-            values[name] = _quantity_text(given[key], name)
+            sweeps[name], texts[name] = _quantity_sweep(given[key], key, name)
         else:
-            values[name] = _unit_keyword_text(given[key], key)
-    if "speed" not in values:
+            sweeps[name], texts[name] = _unit_keyword_sweep(given[key], key)
+    if "speed" not in sweeps:
         raise KegelInputError(_SOURCE_FRICTION, "speed", None,
                               "a speed: speed='2000 rpm' (a string with its unit or a pint quantity), "
                               "speed_rpm=2000 or speed_rad_s=209.4")
-    if ("axial_load" in values) == ("axial_offset" in values):
+    if ("axial_load" in sweeps) == ("axial_offset" in sweeps):
         key = next((k for k in ("axial_load", "axial_load_N", "axial_load_kN") if given.get(k) is not None),
                    "axial_load")
         raise KegelInputError(_SOURCE_FRICTION, key, given.get(key),
                               "exactly one of axial_load (force-controlled, e.g. '6 kN' or axial_load_kN=6) and "
                               "axial_offset (displacement-controlled preload, e.g. '20 um' or axial_offset_um=20)")
     order = ("speed", "axial_load", "axial_offset", "radial_load", "temperature")
-    return {k: values[k] for k in order if k in values}
+    spec = OperatingSpec(**sweeps, given=tuple(f"operating.{k}" for k in order if k in sweeps))
+    return spec, {k: texts[k] for k in order if k in texts}
 
 
 def _items(value: Any, name: str) -> list[Any] | None:
@@ -563,24 +595,27 @@ def _items(value: Any, name: str) -> list[Any] | None:
     return None
 
 
-def _quantity_text(value: Any, name: str) -> str | list[str]:
-    """An operating quantity as the scene writes it: the string as given (checked here by the
-    grammar of :mod:`kegel.units`, so the error names the argument), or a pint quantity as its SI
-    value with the SI unit; a list for a sweep."""
-    items = _items(value, name)
+def _quantity_sweep(value: Any, key: str, name: str) -> tuple["Sweep", str | list[str]]:
+    """An operating quantity given with its unit (a string, checked by the grammar of
+    :mod:`kegel.units`, or a pint quantity), or a list of them: its SI values, named by the
+    argument, and its scene text (a pint quantity as its SI value with the SI unit)."""
+    from .model.scene_model import Sweep
+
+    items = _items(value, key)
     if items is not None:
-        return [_one_quantity(v, f"{name}[{i}]", name) for i, v in enumerate(items)]
-    return _one_quantity(value, name, name)
+        pairs = [_one_quantity(v, f"{key}[{i}]", name) for i, v in enumerate(items)]
+        return Sweep(tuple(p[0] for p in pairs), key, items), [p[1] for p in pairs]
+    si, text = _one_quantity(value, key, name)
+    return Sweep((si,), key, value), text
 
 
-def _one_quantity(value: Any, key: str, name: str) -> str:
+def _one_quantity(value: Any, key: str, name: str) -> tuple[float, str]:
     kind = KINDS[_QUANTITIES[name]]
     if isinstance(value, str):
-        parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
-        return value
+        return parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key), value
     if _is_pint_quantity(value):
         si = parse_quantity(value, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key)
-        return f"{si!r} {kind.si_unit}"
+        return si, f"{si!r} {kind.si_unit}"
     unit_keys = " or ".join(f"{k}=" for k, (q, _) in UNIT_KEYWORDS.items() if q == name)
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
         raise KegelInputError(_SOURCE_FRICTION, key, value,
@@ -591,15 +626,19 @@ def _one_quantity(value: Any, key: str, name: str) -> str:
                           f"them (a sweep); numbers in {unit_keys}")
 
 
-def _unit_keyword_text(value: Any, keyword: str) -> str | list[str]:
-    """A number (or a list of them) of a keyword that names its unit, as the scene's text."""
+def _unit_keyword_sweep(value: Any, keyword: str) -> tuple["Sweep", str | list[str]]:
+    """A number (or a list of them) of a keyword that names its unit: SI values and scene text."""
+    from .model.scene_model import Sweep
+
     items = _items(value, keyword)
     if items is not None:
-        return [_unit_number_text(v, f"{keyword}[{i}]", keyword) for i, v in enumerate(items)]
-    return _unit_number_text(value, keyword, keyword)
+        pairs = [_unit_number(v, f"{keyword}[{i}]", keyword) for i, v in enumerate(items)]
+        return Sweep(tuple(p[0] for p in pairs), keyword, items), [p[1] for p in pairs]
+    si, text = _unit_number(value, keyword, keyword)
+    return Sweep((si,), keyword, value), text
 
 
-def _unit_number_text(value: Any, key: str, keyword: str) -> str:
+def _unit_number(value: Any, key: str, keyword: str) -> tuple[float, str]:
     name, unit = UNIT_KEYWORDS[keyword]
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or _is_pint_quantity(value):
         raise KegelInputError(_SOURCE_FRICTION, key, value,
@@ -608,7 +647,9 @@ def _unit_number_text(value: Any, key: str, keyword: str) -> str:
     v = float(value)
     if not math.isfinite(v):
         raise KegelInputError(_SOURCE_FRICTION, key, value, f"a finite number in {unit}")
-    return f"{v!r} {unit}"
+    text = f"{v!r} {unit}"
+    # the same conversion as the scene file's text "<number> <unit>": equal models either way
+    return parse_quantity(text, _QUANTITIES[name], source=_SOURCE_FRICTION, key=key), text
 
 
 def _is_pint_quantity(value: Any) -> bool:
@@ -618,28 +659,32 @@ def _is_pint_quantity(value: Any) -> bool:
     return isinstance(value, pint.Quantity)
 
 
-def _lubrication_table(lubrication: Any) -> dict[str, Any]:
+def _lubrication_spec(lubrication: Any) -> "LubricationSpec":
+    """The ``lubrication`` argument as the typed lubrication (the oil level is checked against
+    the bearing by the validation)."""
+    from .model.scene_model import LubricationSpec
+
     expected = ("'minimum_quantity' or the oil level of an oil bath: 'flooded', 'shaft_center', 'half_roller' or a "
                 "height above the lowest point of the outer diameter with its unit, e.g. '40 mm' (or a pint quantity)")
     if isinstance(lubrication, str) and lubrication in ("minimum_quantity", "none"):
-        return {"mode": "minimum_quantity"}
+        return LubricationSpec("minimum_quantity", None, "lubrication", lubrication)
     if isinstance(lubrication, str) and lubrication in _OIL_LEVEL_WORDS:
-        return {"mode": "oil_bath", "oil_level": lubrication}
+        return LubricationSpec("oil_bath", lubrication, "lubrication", lubrication)
     if isinstance(lubrication, str):
         try:
-            parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
+            level = parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
         except KegelInputError as exc:
             raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication,
                                   f"{expected}; here {exc.expected}") from None
-        return {"mode": "oil_bath", "oil_level": lubrication}
+        return LubricationSpec("oil_bath", level, "lubrication", lubrication)
     if _is_pint_quantity(lubrication):
         level = parse_quantity(lubrication, "length", source=_SOURCE_FRICTION, key="lubrication")
-        return {"mode": "oil_bath", "oil_level": f"{level!r} m"}
+        return LubricationSpec("oil_bath", level, "lubrication", lubrication)
     raise KegelInputError(_SOURCE_FRICTION, "lubrication", lubrication, expected)
 
 
-def _hydraulic_method(hydraulic: Any, lub_table: dict[str, Any]) -> str:
-    oil_bath = lub_table["mode"] == "oil_bath"
+def _hydraulic_method(hydraulic: Any, mode: str) -> str:
+    oil_bath = mode == "oil_bath"
     if hydraulic is None:
         return "liebrecht" if oil_bath else "none"
     if not isinstance(hydraulic, str) or hydraulic not in _HYDRAULIC:
@@ -654,8 +699,10 @@ def _hydraulic_method(hydraulic: Any, lub_table: dict[str, Any]) -> str:
 
 
 def _as_argument_error(exc: KegelInputError, used: dict[str, str] | None = None) -> KegelInputError:
-    """A scene's error (``operating.axial_load[1]``) as the facade's (``axial_load[1]``, or
-    ``axial_load_kN[1]`` when that keyword gave the value: ``used`` maps quantity -> keyword)."""
+    """A validation error as the facade's: the operating quantities' keys are the arguments
+    already (the typed model the facade builds names them); the others (``model.fidelity``,
+    ``bearing.material``, ``operating``) map to the argument that set them (``used``: quantity ->
+    keyword, for a key still written ``operating.<quantity>``)."""
     key = exc.key
     if key.startswith("operating."):
         key = key[len("operating."):]

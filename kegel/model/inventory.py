@@ -8,12 +8,15 @@ lubricant, material and friction parameter set, each with its sources; the examp
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .data import DATA_DIR, load_bearing, load_lubricant, load_material
 from ..base.errors import KegelInputError
 from ..base.io import atomic_write_text
 from ..base._toml import read_toml
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .scene_model import SceneSpec
 
 __all__ = ["KINDS", "inventory", "scene_template", "write_scene_template"]
 
@@ -140,6 +143,27 @@ fidelity = "default"             # fast, default, fine or auto (with tolerance =
 '''
 
 
+def template_spec(text: str, *, source: str | Path = "kegel init") -> "SceneSpec":
+    """The typed scene model (:class:`kegel.scene_model.SceneSpec`) of a template's text, checked
+    by the scenes' validation layer (:func:`kegel.scene.validate_scene`), as ``kegel check``
+    checks the file.
+
+    Raises
+    ------
+    KegelInputError
+        If the values the template writes do not pass (e.g. a bearing whose speed limit the
+        template's speed sweep exceeds).
+    """
+    import tomllib
+
+    from .scene import validate_scene
+    from .scene_model import parse_scene
+
+    spec = parse_scene(tomllib.loads(text), source=str(source))
+    validate_scene(spec)
+    return spec
+
+
 def write_scene_template(path: str | Path, *, bearing: str = "32216", lubricant: str = "FVA3",
                          force: bool = False) -> Path:
     """Write :func:`scene_template` to ``path`` (atomically); refuses to replace an existing file
@@ -156,5 +180,6 @@ def write_scene_template(path: str | Path, *, bearing: str = "32216", lubricant:
     if p.suffix != ".toml":
         raise KegelInputError("command line", "file", str(p), "a .toml file name")
     text = scene_template(bearing, lubricant, name=p.stem.replace("_", " "))
+    template_spec(text, source=p)  # the typed model of what it writes, validated: never a file `check` refuses
     atomic_write_text(p, text)
     return p

@@ -93,7 +93,11 @@ from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene,
 from ..base.errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
-from .options import MAX_SLICES, ROLLING_THERMAL_MODELS, SUPPLY_MODELS
+from ..base.limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
+from .scene_model import (AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
+                          MAX_DYNAMIC_OUTPUTS, MAX_OPERATING_POINTS, MIN_OUTPUT_INTERVAL_S, OIL_LEVEL_WORDS,
+                          DynamicSettings, LubricationSpec, ModelOptions, OperatingSpec, Reader, SceneSpec, StudySpec,
+                          parse_scene)
 from ..base.units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
@@ -114,49 +118,17 @@ __all__ = [
     "load_scene",
     "resolve_oil_level",
     "scene_from_dict",
+    "validate_scene",
 ]
 
-#: Largest speed factor n * d_m accepted [rpm * mm]: about twice the usual limit of
-#: oil-lubricated tapered roller bearings, beyond which kegel's models are not meant to be used.
-MAX_SPEED_FACTOR_RPM_MM = 1.0e6
-#: Largest number of operating points in one scene (the product of its sweeps), checked before
-#: any point is built: a quasi-static point costs 10-1000 ms and its record about 5 kB.
-MAX_OPERATING_POINTS = 100_000
-#: Dynamic runs: simulated time, output interval and number of outputs per point.
-MAX_DYNAMIC_DURATION_S = 10.0
-MIN_OUTPUT_INTERVAL_S = 1e-6
-MAX_DYNAMIC_OUTPUTS = 200_000
+#: The limits of the scene model (kegel.limits, kegel.scene_model), here under their old names too.
+MAX_SPEED_FACTOR_RPM_MM = _MAX_SPEED_FACTOR_RPM_MM
 #: Largest |misalignment| of the inner ring [rad].
 MAX_MISALIGNMENT_RAD = 0.01
 #: Largest contact / hydraulic boundary g (``model.contact_film_limit``): a film height beyond
 #: 10 mm is no longer near a line contact of any bearing kegel models.
 MAX_CONTACT_FILM_LIMIT_M = 0.01
-
-_ALLOWED: dict[str, set[str]] = {
-    "scene": {"name", "description"},
-    # a designation, or boundary dimensions (kegel.data.BEARING_SCENE_KEYS, estimated geometry)
-    "bearing": {"designation", "material", "d", "D", "T", "B", "C", "e", "alpha", "Z", "C0r", "Y"},
-    # a name, or viscosities (kegel.data.LUBRICANT_SCENE_KEYS, estimated laws)
-    "lubricant": {"name", "nu40_mm2_s", "iso_vg", "nu100_mm2_s", "density_15C_kg_m3", "description"},
-    "operating": {
-        "axial_load", "axial_offset", "radial_load", "tilt_moment", "misalignment", "speed",
-        "temperature",
-    },
-    "lubrication": {"mode", "oil_level"},
-    "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
-              "cfd_results", "tolerance", "rolling_thermal", "inlet_gap_ratio", "lubricant_supply",
-              "contact_film_limit"},
-    "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
-                "tolerance", "checkpoint_interval", "threads", "load_profile"},
-    "output": {"directory"},
-    "study": {"lubrication", "hydraulic", "cfd_results"},
-}
-#: Hydraulic-loss methods a study compares: Liebrecht's correlation (seed paper Eq. 38-40), the
-#: SKF catalogue model's drag moment, kegel's OpenFOAM results.
-HYDRAULIC_METHODS = ("liebrecht", "skf", "cfd")
-_REQUIRED_SECTIONS = ("bearing", "lubricant", "operating", "lubrication")
-_SWEEPABLE = ("axial_load", "axial_offset", "radial_load", "speed", "temperature")
-_OIL_LEVEL_WORDS = ("none", "half_roller", "shaft_center", "flooded")
+_OIL_LEVEL_WORDS = OIL_LEVEL_WORDS
 
 
 @dataclass(frozen=True)
@@ -255,115 +227,6 @@ DYNAMIC_PRESETS: dict[str, dict[str, Any]] = {
     "default": dict(slices=20, slice_model="alternative_slicing", rib_model="hertz"),
     "fine": dict(slices=40, slice_model="alternative_slicing", rib_model="hertz"),
 }
-_CHOICES = {
-    "slice_model": ("alternative_slicing", "independent"),
-    "rib_model": ("cell", "hertz"),
-    "solution": ("quasi_static", "dynamic"),
-    "hydraulic": ("none", "correlation", "cfd"),
-    "rolling_thermal": ROLLING_THERMAL_MODELS,
-}
-
-
-@dataclass(frozen=True)
-class DynamicSettings:
-    """The ``[dynamic]`` table of a scene (SI units; see the module docstring).
-
-    ``speed_profile`` is a tuple of (time_s, speed_rad_s) pairs, or empty for a constant speed at
-    the operating point's speed.
-    """
-
-    duration_s: float = 0.02
-    output_interval_s: float = 1e-4
-    speed_profile: tuple[tuple[float, float], ...] = ()
-    hold_axial: bool = False
-    tilt_free: bool = False
-    average_fraction: float = 0.5
-    tolerance: float = 1e-7
-    checkpoint_interval_s: float = 5e-3
-    threads: int = 0   # 0: every core the process may use
-    load_profile: tuple[tuple[float, float, float], ...] = ()
-
-    def as_dict(self) -> dict[str, Any]:
-        """Plain dictionary, written next to every result."""
-        d = dict(self.__dict__)
-        d["speed_profile"] = [list(p) for p in self.speed_profile]
-        d["load_profile"] = [list(p) for p in self.load_profile]
-        return d
-
-
-def _dynamic(reader: "_Reader", table: dict[str, Any]) -> DynamicSettings:
-    kw: dict[str, Any] = {}
-    for key, attr in (("duration", "duration_s"), ("output_interval", "output_interval_s"),
-                      ("checkpoint_interval", "checkpoint_interval_s")):
-        if key in table:
-            v = reader.quantity(table[key], "time", f"dynamic.{key}")
-            if not v > 0:
-                raise reader.error(f"dynamic.{key}", table[key], "a time > 0")
-            kw[attr] = v
-    if kw.get("output_interval_s", 1e-4) > kw.get("duration_s", 0.02):
-        raise reader.error("dynamic.output_interval", table.get("output_interval"), "at most the duration")
-    if kw.get("duration_s", 0.02) > MAX_DYNAMIC_DURATION_S:
-        raise reader.error("dynamic.duration", table.get("duration"),
-                           f"at most {MAX_DYNAMIC_DURATION_S:g} s of simulated time (time steps are microseconds)")
-    if kw.get("output_interval_s", 1e-4) < MIN_OUTPUT_INTERVAL_S:
-        raise reader.error("dynamic.output_interval", table.get("output_interval"),
-                           f"at least {MIN_OUTPUT_INTERVAL_S * 1e6:g} us")
-    outputs = kw.get("duration_s", 0.02) / kw.get("output_interval_s", 1e-4)
-    if outputs > MAX_DYNAMIC_OUTPUTS:
-        raise reader.error("dynamic.output_interval", table.get("output_interval"),
-                           f"at most {MAX_DYNAMIC_OUTPUTS} outputs per point (here {outputs:.3g}: every output keeps "
-                           "the state of every body)")
-    for key in ("hold_axial", "tilt_free"):
-        if key in table:
-            if not isinstance(table[key], bool):
-                raise reader.error(f"dynamic.{key}", table[key], "true or false")
-            kw[key] = table[key]
-    if "load_profile" in table:
-        prof = table["load_profile"]
-        if not isinstance(prof, list) or not prof:
-            raise reader.error("dynamic.load_profile", prof, 'a list of ["time", "axial load", "radial load"] triples')
-        pts = []
-        for i, row in enumerate(prof):
-            if not (isinstance(row, list) and len(row) == 3):
-                raise reader.error(f"dynamic.load_profile[{i}]", row, 'a triple ["10 ms", "6 kN", "2 kN"]')
-            t = reader.quantity(row[0], "time", f"dynamic.load_profile[{i}][0]")
-            fa = reader.quantity(row[1], "force", f"dynamic.load_profile[{i}][1]")
-            fr = reader.quantity(row[2], "force", f"dynamic.load_profile[{i}][2]")
-            if fa < 0 or fr < 0:
-                raise reader.error(f"dynamic.load_profile[{i}]", row, "loads >= 0")
-            if pts and not t > pts[-1][0]:
-                raise reader.error(f"dynamic.load_profile[{i}][0]", row[0], "times increasing along the profile")
-            pts.append((t, fa, fr))
-        kw["load_profile"] = tuple(pts)
-    if "threads" in table:
-        v = table["threads"]
-        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= 64:
-            raise reader.error("dynamic.threads", v, "an integer in [1, 64]")
-        kw["threads"] = v
-    for key, lo, hi in (("average_fraction", 0.0, 1.0), ("tolerance", 1e-12, 1e-3)):
-        if key in table:
-            v = table[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (lo < v <= hi):
-                raise reader.error(f"dynamic.{key}", v, f"a number in ({lo:g}, {hi:g}]")
-            kw[key] = float(v)
-    if "speed_profile" in table:
-        prof = table["speed_profile"]
-        if not isinstance(prof, list) or not prof:
-            raise reader.error("dynamic.speed_profile", prof, 'a list of ["time", "speed"] pairs')
-        pts = []
-        for i, pair in enumerate(prof):
-            if not (isinstance(pair, list) and len(pair) == 2):
-                raise reader.error(f"dynamic.speed_profile[{i}]", pair, 'a pair ["10 ms", "2000 rpm"]')
-            t = reader.quantity(pair[0], "time", f"dynamic.speed_profile[{i}][0]")
-            w = parse_quantity(pair[1], "speed", source=reader.src("dynamic.speed_profile"),
-                               key=f"dynamic.speed_profile[{i}][1]")
-            if pts and not t > pts[-1][0]:
-                raise reader.error(f"dynamic.speed_profile[{i}][0]", pair[0], "times increasing along the profile")
-            pts.append((t, w))
-        kw["speed_profile"] = tuple(pts)
-    return DynamicSettings(**kw)
-
-
 @dataclass(frozen=True)
 class Lubrication:
     """Lubrication of a scene.
@@ -473,6 +336,8 @@ class Scene:
     study: Study | None = None
     #: the dotted keys ``--set`` changed (the name and description are the file's words)
     overridden: tuple[str, ...] = ()
+    #: the typed model the scene was validated from (:mod:`kegel.scene_model`)
+    spec: SceneSpec | None = field(default=None, repr=False, compare=False)
 
     @property
     def title(self) -> str:
@@ -552,165 +417,73 @@ def apply_overrides(raw: dict[str, Any], overrides: list[str] | tuple[str, ...])
     return out, keys
 
 
-class _Reader:
-    """Validation helper that knows where each value came from."""
-
-    def __init__(self, path: str, overridden: set[str]) -> None:
-        self.path = path
-        self.overridden = overridden
-
-    def src(self, key: str) -> str:
-        return f"{self.path} (--set {key})" if key in self.overridden else self.path
-
-    def error(self, key: str, value: Any, expected: str) -> KegelInputError:
-        return KegelInputError(self.src(key), key, value, expected)
-
-    def quantity(self, value: Any, kind: str, key: str) -> float:
-        return parse_quantity(value, kind, source=self.src(key), key=key)
-
-    def sweep(self, value: Any, kind: str, key: str) -> list[float]:
-        """One value, a list of values, or {from, to, points}: a list of SI floats."""
-        if isinstance(value, str):
-            return [self.quantity(value, kind, key)]
-        if isinstance(value, list):
-            if not value:
-                raise self.error(key, value, "a sweep with at least one point")
-            return [self.quantity(v, kind, f"{key}[{i}]") for i, v in enumerate(value)]
-        if isinstance(value, dict):
-            unknown = set(value) - {"from", "to", "points"}
-            if unknown:
-                raise self.error(f"{key}.{sorted(unknown)[0]}", value[sorted(unknown)[0]],
-                                 "only the keys from, to, points in a range")
-            for k in ("from", "to", "points"):
-                if k not in value:
-                    raise self.error(f"{key}.{k}", None, "a range {from = ..., to = ..., points = N}")
-            points = value["points"]
-            if isinstance(points, bool) or not isinstance(points, int) or points < 1:
-                raise self.error(f"{key}.points", points, "a sweep with at least one point (an integer >= 1)")
-            if points > MAX_OPERATING_POINTS:
-                raise self.error(f"{key}.points", points, f"at most {MAX_OPERATING_POINTS} points (kegel's sweep limit)")
-            lo = self.quantity(value["from"], kind, f"{key}.from")
-            hi = self.quantity(value["to"], kind, f"{key}.to")
-            if points == 1:
-                if lo != hi:
-                    raise self.error(f"{key}.points", points, "points >= 2 when from and to differ")
-                return [lo]
-            return [float(v) for v in np.linspace(lo, hi, points)]
-        # a bare number or another type: the quantity parser explains what a value needs
-        return [self.quantity(value, kind, key)]
-
-    def choice(self, table: dict, key: str, prefix: str, choices: tuple[str, ...], default: str | None) -> str:
-        full = f"{prefix}.{key}"
-        if key not in table:
-            if default is None:
-                raise self.error(full, None, f"one of {', '.join(choices)}")
-            return default
-        value = table[key]
-        if value not in choices:
-            raise self.error(full, value, f"one of {', '.join(choices)}")
-        return value
+#: the reader of scene values (kegel.scene_model.Reader; the name this module used before)
+_Reader = Reader
 
 
-def _check_keys(reader: _Reader, raw: dict[str, Any]) -> None:
-    for section, value in raw.items():
-        if section not in _ALLOWED:
-            raise reader.error(section, value if not isinstance(value, dict) else "(table)",
-                               f"a known section ({', '.join(_ALLOWED)})")
-        if not isinstance(value, dict):
-            raise reader.error(section, value, f"a table [{section}]")
-        for key in value:
-            if key not in _ALLOWED[section]:
-                raise reader.error(f"{section}.{key}", value[key],
-                                   f"a known key of [{section}] ({', '.join(sorted(_ALLOWED[section]))})")
-    for section in _REQUIRED_SECTIONS:
-        if section not in raw and not (section == "lubrication" and "study" in raw):
-            raise reader.error(section, None, f"a table [{section}]")
-    if "study" in raw:
-        if "lubrication" in raw:
-            raise reader.error("lubrication", "(table)", "no [lubrication] table beside [study] "
-                               "(study.lubrication lists the lubrications compared)")
-        if "hydraulic" in raw.get("model", {}):
-            raise reader.error("model.hydraulic", raw["model"]["hydraulic"],
-                               "no value beside [study] (study.hydraulic lists the methods compared)")
-
-
-AUTO_TOLERANCE = 0.01
-
-
-def _tolerance(reader: _Reader, model: dict[str, Any]) -> float:
-    """``model.tolerance``: a fraction, or a string with a per-cent sign ("1 %")."""
-    v = model.get("tolerance", AUTO_TOLERANCE)
-    x = v
-    if isinstance(v, str) and v.strip().endswith("%"):
-        try:
-            x = float(v.strip()[:-1]) / 100.0
-        except ValueError:
-            x = None
-    if isinstance(x, bool) or not isinstance(x, (int, float)) or not 0.0 < x <= 0.5:
-        raise reader.error("model.tolerance", v, 'a fraction in (0, 0.5] or a per-cent string such as "1 %"')
-    return float(x)
-
-
-def _fidelity(reader: _Reader, model: dict[str, Any], lubrication_mode: str) -> Fidelity:
-    preset = model.get("fidelity", "default")
-    if preset != "auto" and preset not in FIDELITY_PRESETS:
-        raise reader.error("model.fidelity", preset, f"one of {', '.join(FIDELITY_PRESETS)} or auto")
-    if "tolerance" in model and preset != "auto":
-        raise reader.error("model.tolerance", model["tolerance"], 'no value unless model.fidelity = "auto"')
+def _fidelity(reader: Reader, model: ModelOptions, lubrication_mode: str) -> Fidelity:
+    """The model options' ranges and cross-checks (with the lubrication, with ``auto``), resolved
+    into a :class:`Fidelity` from the preset."""
+    preset = model.fidelity
+    w = model.as_written
+    if model.given("tolerance") and preset != "auto":
+        raise reader.error("model.tolerance", w("tolerance"), 'no value unless model.fidelity = "auto"')
     if preset == "auto":
         # kegel.run chooses the preset by solving the scene's first and last points at each level
         for key in ("slices", "slice_model", "rib_model", "rib_cells", "cage"):
-            if key in model:
-                raise reader.error(f"model.{key}", model[key], 'no value with fidelity = "auto" (auto chooses it)')
-        if model.get("solution", "quasi_static") != "quasi_static":
-            raise reader.error("model.solution", model.get("solution"),
+            if model.given(key):
+                raise reader.error(f"model.{key}", w(key), 'no value with fidelity = "auto" (auto chooses it)')
+        if (model.solution or "quasi_static") != "quasi_static":
+            raise reader.error("model.solution", model.solution,
                                '"quasi_static" with fidelity = "auto" (it chooses among the quasi-static levels)')
     opts = dict(FIDELITY_PRESETS["default" if preset == "auto" else preset])
     if preset == "auto":
-        opts["tolerance"] = _tolerance(reader, model)
+        tol = AUTO_TOLERANCE if model.tolerance is None else model.tolerance
+        if not 0.0 < tol <= 0.5:
+            raise reader.error("model.tolerance", w("tolerance"),
+                               'a fraction in (0, 0.5] or a per-cent string such as "1 %"')
+        opts["tolerance"] = float(tol)
     opts["hydraulic"] = "correlation" if lubrication_mode == "oil_bath" else "none"
     custom = False
     for key in ("slices", "rib_cells"):
-        if key in model:
-            v = model[key]
-            lo, hi = (2, MAX_SLICES) if key == "slices" else (4, 512)  # run's limits: one check
-            if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
+        v = getattr(model, key)
+        if v is not None:
+            lo, hi = INT_RANGES[key]  # run's limits: one check
+            if not lo <= v <= hi:
                 raise reader.error(f"model.{key}", v, f"an integer in [{lo}, {hi}]")
             opts[key] = v
             custom = True
-    if "cage" in model:
-        if not isinstance(model["cage"], bool):
-            raise reader.error("model.cage", model["cage"], "true or false")
-        opts["cage"] = model["cage"]
+    if model.cage is not None:
+        opts["cage"] = model.cage
         custom = True
-    for key, choices in _CHOICES.items():
-        if key in model:
-            opts[key] = reader.choice(model, key, "model", choices, None)
+    for key in ("slice_model", "rib_model", "solution", "hydraulic", "rolling_thermal"):
+        if getattr(model, key) is not None:
+            opts[key] = getattr(model, key)
             custom = True
-    if "inlet_gap_ratio" in model:
-        v = model["inlet_gap_ratio"]
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not (v == 0 or 2 <= v < 1e9):
-            raise reader.error("model.inlet_gap_ratio", v,
+    if model.inlet_gap_ratio is not None:
+        v = model.inlet_gap_ratio
+        if not (v == 0 or 2 <= v < 1e9):
+            raise reader.error("model.inlet_gap_ratio", w("inlet_gap_ratio"),
                                "0 (fully flooded) or a ratio >= 2 (Biboulet-Houpert's starvation range)")
         opts["inlet_gap_ratio"] = float(v)
-    if "lubricant_supply" in model:
-        opts["lubricant_supply"] = reader.choice(model, "lubricant_supply", "model", SUPPLY_MODELS, None)
-    if "contact_film_limit" in model:
-        v = model["contact_film_limit"]
-        g = reader.quantity(v, "length", "model.contact_film_limit")
+    if model.lubricant_supply is not None:
+        opts["lubricant_supply"] = model.lubricant_supply
+    if model.contact_film_limit_m is not None:
+        g = model.contact_film_limit_m
         if not 0.0 <= g <= MAX_CONTACT_FILM_LIMIT_M:
-            raise reader.error("model.contact_film_limit", v, f"a film height in [0, {MAX_CONTACT_FILM_LIMIT_M * 1e3:g} mm] "
-                               "(0: no cut-off), e.g. \"0.2 mm\"")
+            raise reader.error("model.contact_film_limit", w("contact_film_limit"),
+                               f"a film height in [0, {MAX_CONTACT_FILM_LIMIT_M * 1e3:g} mm] (0: no cut-off), "
+                               "e.g. \"0.2 mm\"")
         opts["contact_film_limit_m"] = g
     if opts["solution"] == "dynamic":
         for key, value in DYNAMIC_PRESETS[preset].items():
-            if key not in model:
+            if not model.given(key):
                 opts[key] = value
     if opts["hydraulic"] != "none" and lubrication_mode == "minimum_quantity":
         raise reader.error("model.hydraulic", opts["hydraulic"],
                            "'none' for minimum-quantity lubrication (no oil bath to churn)")
-    if "cfd_results" in model:
-        v = model["cfd_results"]
+    if model.given("cfd_results"):
+        v = model.cfd_results
         if opts["hydraulic"] != "cfd":
             raise reader.error("model.cfd_results", v, 'no value unless model.hydraulic = "cfd"')
         if not isinstance(v, str) or not v or not Path(v).exists():
@@ -730,56 +503,49 @@ def resolve_oil_level(written: Any, bearing: BearingData, *, source: str | Path,
     centre of the lowest roller: the paper's "oil bath half roller height"), ``shaft_center``
     (D/2) and ``flooded`` (D).
     """
+    level = written if isinstance(written, str) and written in _OIL_LEVEL_WORDS else parse_quantity(
+        written, "length", source=source, key=key)
+    return _oil_level_m(level, written, bearing, source=source, key=key)
+
+
+def _oil_level_m(level: str | float, written: Any, bearing: BearingData, *, source: str | Path, key: str) -> float:
+    """An oil level (a word of ``OIL_LEVEL_WORDS`` or a height [m]) in metres, within [0, D]."""
     D = bearing.outer_diameter_m
-    if written in _OIL_LEVEL_WORDS:
+    if isinstance(level, str):
         return {
             "none": 0.0,
             "half_roller": 0.5 * (D - bearing.pitch_diameter_m),
             "shaft_center": 0.5 * D,
             "flooded": D,
-        }[written]
-    level = parse_quantity(written, "length", source=source, key=key)
+        }[level]
     if not 0.0 <= level <= D:
         raise KegelInputError(
             source, key, written,
             f"an oil level in [0, D] = [0, {D * 1e3:g} mm] above the lowest point of the "
             f"outer diameter of bearing {bearing.designation}",
         )
-    return level
+    return float(level)
 
 
-def _study(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Study:
-    cases = table.get("lubrication")
-    if not isinstance(cases, list) or not cases:
-        raise reader.error("study.lubrication", cases, "a list of lubrications, e.g. [\"flooded\", "
-                           "\"shaft_center\", \"minimum_quantity\"] (oil levels or minimum_quantity)")
+def _study(reader: Reader, spec: StudySpec, bearing: BearingData) -> Study:
+    """The study's lubrications resolved against the bearing, its methods' cross-checks."""
     out: list[Lubrication] = []
-    for i, c in enumerate(cases):
+    for i, (level, c) in enumerate(zip(spec.levels, spec.lubrication)):
         key = f"study.lubrication[{i}]"
-        if c in ("minimum_quantity", "none"):
+        if level in ("minimum_quantity", "none"):
             lub = Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none")
         else:
-            if not isinstance(c, str):
-                raise reader.error(key, c, f"minimum_quantity or an oil level ({', '.join(_OIL_LEVEL_WORDS[1:])}, "
-                                   "or a length in (0, D])")
-            level = resolve_oil_level(c, bearing, source=reader.src("study.lubrication"), key=key)
-            if level == 0.0:
+            level_m = _oil_level_m(level, c, bearing, source=reader.src("study.lubrication"), key=key)
+            if level_m == 0.0:
                 raise reader.error(key, c, "an oil level > 0 (minimum_quantity for no oil bath)")
-            lub = Lubrication(mode="oil_bath", oil_level_m=level, oil_level_as_written=c)
+            lub = Lubrication(mode="oil_bath", oil_level_m=level_m, oil_level_as_written=c)
         if any(lub.mode == o.mode and abs(lub.oil_level_m - o.oil_level_m) < 1e-9 for o in out):
             raise reader.error(key, c, "a lubrication not listed before (each case once)")
         out.append(lub)
-    methods = table.get("hydraulic", ["liebrecht", "skf"])
-    if isinstance(methods, str):
-        methods = [methods]
-    if not isinstance(methods, list) or not methods:
-        raise reader.error("study.hydraulic", methods, f"a list of methods among {', '.join(HYDRAULIC_METHODS)}")
-    for i, m in enumerate(methods):
-        if m not in HYDRAULIC_METHODS:
-            raise reader.error(f"study.hydraulic[{i}]", m, f"one of {', '.join(HYDRAULIC_METHODS)}")
+    methods = list(spec.methods)
     if len(set(methods)) != len(methods):
         raise reader.error("study.hydraulic", methods, "each method once")
-    cfd = table.get("cfd_results")
+    cfd = spec.cfd_results
     if "cfd" in methods:
         if not isinstance(cfd, str) or not cfd:
             raise reader.error("study.cfd_results", cfd, 'a folder (or results.json) of kegel cfd run results, '
@@ -789,65 +555,44 @@ def _study(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Stud
     return Study(cases=tuple(out), methods=tuple(methods), cfd_results=cfd)
 
 
-def _lubrication(reader: _Reader, table: dict[str, Any], bearing: BearingData) -> Lubrication:
-    mode = reader.choice(table, "mode", "lubrication", ("oil_bath", "minimum_quantity"), None)
-    written = table.get("oil_level", "none" if mode == "minimum_quantity" else None)
-    key = "lubrication.oil_level"
-    if written is None:
-        raise reader.error(key, None, f"an oil level ({', '.join(_OIL_LEVEL_WORDS)}, or a length in [0, D])")
-    level = resolve_oil_level(written, bearing, source=reader.src(key), key=key)
+def _lubrication(reader: Reader, spec: LubricationSpec, bearing: BearingData) -> Lubrication:
+    """The lubrication's oil level resolved against the bearing, and its cross-check with the mode."""
+    mode, key = spec.mode, spec.key
+    if spec.oil_level is None:
+        if mode == "oil_bath":
+            raise reader.error(key, None, f"an oil level ({', '.join(_OIL_LEVEL_WORDS)}, or a length in [0, D])")
+        return Lubrication(mode=mode, oil_level_m=0.0, oil_level_as_written="none")
+    level = _oil_level_m(spec.oil_level, spec.written, bearing, source=reader.src(key), key=key)
     if mode == "minimum_quantity" and level != 0.0:
-        raise reader.error(key, written, "no oil level (or 'none') for minimum-quantity lubrication")
+        raise reader.error(key, spec.written, "no oil level (or 'none') for minimum-quantity lubrication")
     if mode == "oil_bath" and level == 0.0:
-        raise reader.error(key, written, "an oil level > 0 for an oil bath")
-    return Lubrication(mode=mode, oil_level_m=level, oil_level_as_written=str(written))
+        raise reader.error(key, spec.written, "an oil level > 0 for an oil bath")
+    return Lubrication(mode=mode, oil_level_m=level, oil_level_as_written=str(spec.written))
 
 
-def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData) -> tuple[list[OperatingPoint], tuple[str, ...]]:
-    if ("axial_load" in op) == ("axial_offset" in op):
-        raise reader.error(
-            "operating.axial_load", op.get("axial_load"),
-            "exactly one of axial_load (force-controlled) and axial_offset (displacement-controlled preload)",
-        )
-    for key in ("speed", "temperature"):
-        if key not in op:
-            raise reader.error(f"operating.{key}", None, "a value, a list or a range {from, to, points}")
-
-    kinds = {"axial_load": "force", "axial_offset": "length", "radial_load": "force",
-             "speed": "speed", "temperature": "temperature"}
-    values: dict[str, list[float]] = {}
-    for key, kind in kinds.items():
-        if key in op:
-            values[key] = reader.sweep(op[key], kind, f"operating.{key}")
-    values.setdefault("radial_load", [0.0])
-
-    def as_written(v: float, raw: Any, i: int) -> Any:
-        if isinstance(raw, str):
-            return raw
-        if isinstance(raw, list):
-            return raw[i]
-        return v
-
+def _operating_points(reader: Reader, op: OperatingSpec, bearing: BearingData) -> tuple[list[OperatingPoint], tuple[str, ...]]:
+    """Every operating quantity within its range (:func:`operating_range_error`), the tilt moment's
+    limits, the number of points; the points (every combination, speed varying fastest)."""
+    sweeps = op.sweeps()
     for key in ("axial_load", "axial_offset", "radial_load", "speed", "temperature"):
-        if key not in op:
+        s = sweeps.get(key)
+        if s is None:
             continue
-        raw = op[key]
-        for i, v in enumerate(values[key]):
+        for i, v in enumerate(s.values):
             expected = operating_range_error(key, v, bearing)
             if expected is not None:
-                where = f"operating.{key}" if isinstance(raw, str) else f"operating.{key}[{i}]"
-                raise reader.error(where, as_written(v, raw, i), expected)
+                raise reader.error(s.item_key(i), s.item_written(i), expected)
+    values = {k: list(s.values) for k, s in sweeps.items()}
 
-    tilt = reader.quantity(op["tilt_moment"], "moment", "operating.tilt_moment") if "tilt_moment" in op else 0.0
-    mis = reader.quantity(op["misalignment"], "angle", "operating.misalignment") if "misalignment" in op else 0.0
+    tilt, mis = op.tilt_moment.value, op.misalignment.value
     expected = operating_range_error("misalignment", mis, bearing)
     if expected is not None:
-        raise reader.error("operating.misalignment", op["misalignment"], expected)
+        raise reader.error(op.misalignment.key, op.misalignment.written, expected)
     if tilt != 0.0:
         expected = _tilt_moment_error(tilt, min(values["axial_load"]) if "axial_load" in values else None, mis,
                                       bearing)
         if expected is not None:
-            raise reader.error("operating.tilt_moment", op["tilt_moment"], expected)
+            raise reader.error(op.tilt_moment.key, op.tilt_moment.written, expected)
 
     axial_key = "axial_load" if "axial_load" in values else "axial_offset"
     order = ("temperature", axial_key, "radial_load", "speed")  # speed varies fastest
@@ -874,7 +619,6 @@ def _operating_points(reader: _Reader, op: dict[str, Any], bearing: BearingData)
             )
         )
     return points, swept
-
 
 def operating_range_error(quantity: str, value: float, bearing: BearingData) -> str | None:
     """The range of one operating quantity, as every entry point checks it (scene files,
@@ -1023,18 +767,18 @@ def _iso76_y0(g: BearingGeometry) -> float:
     return 0.22 / math.tan(g.cup_angle_rad)
 
 
-def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[OperatingPoint], bearing: BearingData,
+def _check_static_load(reader: Reader, op: OperatingSpec, points: list[OperatingPoint], bearing: BearingData,
                        g: BearingGeometry) -> None:
     """Loads against the basic static load rating C0r: the contact models are elastic, and a
     static equivalent load above C0r (ISO 76: 4000 MPa at the most loaded roller contact) means
     permanent deformation of the raceways. Displacement-controlled points are checked in the run."""
     # the lift-off of a single TRB (Fa / Fr > tan(alpha_o)) is checked for every point here, not
-    # at the point in the run: kegel check must reject what kegel run would
+    # at the point in the run: kegel check must reject what kegel run would (a lift-off needs Fr > 0)
     for p in points:
         expected = None if p.axial_load_N is None else _lift_off_error(g, p.axial_load_N, p.radial_load_N)
         if expected is not None:
-            key = "radial_load" if "radial_load" in op else "axial_load"
-            raise reader.error(f"operating.{key}", op[key], f"at every point (here point {p.index}): {expected}")
+            s = op.radial_load
+            raise reader.error(s.key, s.written, f"at every point (here point {p.index}): {expected}")
     worst = max((p for p in points if p.axial_load_N is not None),
                 key=lambda p: static_equivalent_load_N(g, p.axial_load_N, p.radial_load_N), default=None)
     if worst is None:
@@ -1042,9 +786,8 @@ def _check_static_load(reader: "_Reader", op: dict[str, Any], points: list[Opera
     expected = _static_load_error(g, bearing, worst.axial_load_N, worst.radial_load_N)
     if expected is not None:
         # name the load whose term dominates P0
-        key = "axial_load" if _iso76_y0(g) * worst.axial_load_N >= 0.5 * worst.radial_load_N else "radial_load"
-        raise reader.error(f"operating.{key}", op[key], expected)
-
+        s = op.axial_load if _iso76_y0(g) * worst.axial_load_N >= 0.5 * worst.radial_load_N else op.radial_load
+        raise reader.error(s.key, s.written, expected)
 
 def _check_dynamic_profiles(reader: "_Reader", table: dict[str, Any], dyn: "DynamicSettings", bearing: BearingData,
                             g: BearingGeometry) -> None:
@@ -1094,48 +837,52 @@ def _speed_limit_text(bearing: BearingData) -> str:
             f"{bearing.designation})")
 
 
-def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overridden: set[str] | None = None) -> Scene:
-    """Validate a raw scene dictionary (as read from TOML) and build a :class:`Scene`."""
-    reader = _Reader(str(source), overridden or set())
-    _check_keys(reader, raw)
+def validate_scene(spec: SceneSpec) -> Scene:
+    """The one validation layer: check a :class:`kegel.scene_model.SceneSpec` (from a scene file,
+    ``--set``, ``kegel init`` or the Python API) and resolve it into a :class:`Scene`.
 
-    meta = raw.get("scene", {})
-    for key in ("name", "description"):
-        if key in meta and not isinstance(meta[key], str):
-            raise reader.error(f"scene.{key}", meta[key], "a string")
+    Loads the bearing, material and oil; checks every operating quantity's range (speed factor,
+    the oil's formulas at every temperature, misalignment, tilt moment), the loads (lift-off of a
+    single TRB, ISO 76 static load within C0r), the lubrication against the bearing (oil level in
+    [0, D]) and against the model (hydraulic loss, CFD results), the model options' ranges and
+    ``auto``'s keys, and the dynamic profiles. ``kegel check`` and ``kegel run`` both call it.
 
-    b = raw["bearing"]
+    Raises
+    ------
+    KegelInputError
+        Naming the source (file, ``--set`` or the API's entry point), the key (or argument), the
+        value as written and what was expected.
+    """
+    reader = Reader(spec.source, set(spec.overridden))
     # a designation (shipped data, the ISO 355 series table, a file) or boundary dimensions
-    bearing = bearing_from_scene(b, source=reader.src)
-    material = load_material(str(b.get("material", "bearing_steel")), source=reader.src("bearing.material"),
-                             key="bearing.material")
+    bearing = bearing_from_scene(spec.bearing.table(), source=reader.src)
+    material = load_material(spec.bearing.material, source=reader.src("bearing.material"), key="bearing.material")
     # a shipped oil's name (or a file), or viscosities from which its laws are estimated
-    lubricant = lubricant_from_scene(raw["lubricant"], source=reader.src)
+    lubricant = lubricant_from_scene(spec.lubricant.table(), source=reader.src)
 
-    points, swept = _operating_points(reader, raw["operating"], bearing)
+    points, swept = _operating_points(reader, spec.operating, bearing)
     # the bearing's derived geometry must fit its envelope (a custom data file may not)
     g = derive_geometry(bearing, material)
-    _check_static_load(reader, raw["operating"], points, bearing, g)
+    _check_static_load(reader, spec.operating, points, bearing, g)
+    temperature = spec.operating.temperature
     for T in sorted({p.temperature_K for p in points}):
         # the oil's formulas must hold at every temperature of the scene (checked now, not in the run)
-        lubricant_state(lubricant, T, source=reader.src("operating.temperature"), key="operating.temperature")
-    study = _study(reader, raw["study"], bearing) if "study" in raw else None
+        lubricant_state(lubricant, T, source=reader.src(temperature.key), key=temperature.key)
+    study = _study(reader, spec.study, bearing) if spec.study is not None else None
     # a study solves the contact friction alone; its lubrications add their hydraulic losses
-    lubrication = (_lubrication(reader, raw["lubrication"], bearing) if study is None else
-                   Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none"))
-    fidelity = _fidelity(reader, raw.get("model", {}), lubrication.mode)
-    dynamic = _dynamic(reader, raw.get("dynamic", {}))
-    _check_dynamic_profiles(reader, raw.get("dynamic", {}), dynamic, bearing, g)
+    if study is None:
+        assert spec.lubrication is not None
+        lubrication = _lubrication(reader, spec.lubrication, bearing)
+    else:
+        lubrication = Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none")
+    fidelity = _fidelity(reader, spec.model, lubrication.mode)
+    _check_dynamic_profiles(reader, spec.dynamic_written, spec.dynamic, bearing, g)
 
-    stem = Path(str(source)).stem if str(source) != "<dict>" else "scene"
-    out = raw.get("output", {}).get("directory", f"results/{stem}")
-    if not isinstance(out, str) or not out:
-        raise reader.error("output.directory", out, "a non-empty path string")
-
+    stem = Path(spec.source).stem if spec.source != "<dict>" else "scene"
     return Scene(
-        source=str(source),
-        name=meta.get("name", stem),
-        description=meta.get("description", ""),
+        source=spec.source,
+        name=spec.name,
+        description=spec.description,
         bearing=bearing,
         material=material,
         lubricant=lubricant,
@@ -1143,13 +890,19 @@ def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overr
         swept=swept,
         lubrication=lubrication,
         fidelity=fidelity,
-        output_directory=Path(out),
-        resolved=raw,
-        dynamic=dynamic,
+        output_directory=Path(spec.output_directory or f"results/{stem}"),
+        resolved=spec.raw,
+        dynamic=spec.dynamic,
         study=study,
-        overridden=tuple(sorted(overridden or ())),
+        overridden=tuple(spec.overridden),
+        spec=spec,
     )
 
+
+def scene_from_dict(raw: dict[str, Any], *, source: str | Path = "<dict>", overridden: set[str] | None = None) -> Scene:
+    """Validate a raw scene dictionary (as read from TOML) and build a :class:`Scene`:
+    :func:`kegel.scene_model.parse_scene`, then :func:`validate_scene`."""
+    return validate_scene(parse_scene(raw, source=source, overridden=overridden))
 
 def load_scene(path: str | Path, overrides: list[str] | tuple[str, ...] = ()) -> Scene:
     """Read, override (``--set``) and validate a scene file.

@@ -1,0 +1,147 @@
+"""The three answers with the real rollers: flooded 32208, FVA 3 at 50 degC, Fa = 1 kN, over speed.
+
+For each speed: contact + CFD (the contact's rolling force cut off where the film reaches the
+gap g that the CFD opens, :func:`kegel.supply.contact_loss_at_film_limit`, plus the CFD loss of a
+flooded one-pitch sector at g with ``--cells`` cells across each gap), contact + Liebrecht and
+contact + SKF drag (the uncut flooded contact, the correlation's whole hydraulic loss). The CFD
+cases are those of the gap study (``benchmarks/cfd_gap_study.py``, same folder and names), so the
+2000 rpm case is shared and every case resumes where a session left it.
+
+    .venv/bin/python benchmarks/cfd_three_answers.py [--speeds 500 1000 2000 4000] [--gap 0.08] [--cells 3]
+    .venv/bin/python benchmarks/cfd_three_answers.py --report     # re-read the stored rows
+
+Output: benchmarks/results/cfd_three_answers.{json,png} (rewritten after every speed; rows of
+earlier invocations are kept) and each case's results.json under
+benchmarks/results/cfd_gap_study/<case>/.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import shutil
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from cfd_gap_study import AXIAL_LOAD_N, CASES, STORE, TEMPERATURE_K  # noqa: E402  (one study point)
+
+OUT = HERE / "results" / "cfd_three_answers.json"
+
+
+def case_name(speed_rpm: float, gap: float, cells: int, mesh: str) -> str:
+    return f"32208_{speed_rpm:g}rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}_sector"
+
+
+def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int) -> dict:
+    from kegel.cfd_cases.run import CfdPoint, run_case
+
+    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
+                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=1500, gap_ratio=gap,
+                 cells_across_gap=cells, sector=True)
+    case = CASES / case_name(speed_rpm, gap, cells, mesh)
+    run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
+    data = json.loads((case / "results.json").read_text())
+    meta = json.loads((case / "kegel-case.json").read_text())
+    dest = STORE / case.name
+    dest.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(case / "results.json", dest / "results.json")
+    return {"case": case.name, "gap_m": meta["geometry"]["gap_m"], "cells": data["fidelity"]["cells"],
+            "runtime_s": data["runtime_s"], "iterations": data["iterations"], "steady": data["steady"],
+            "cfd_loss_Nm": data["loss_torque_at_shaft_Nm"],
+            "angular_momentum_balance": data["angular_momentum_balance"]["relative_to_drive_torque"]}
+
+
+def correlations_and_contact(speed_rpm: float, gap_m: float) -> dict:
+    """Contact friction cut at g and uncut, and Liebrecht's and SKF's flooded hydraulic losses."""
+    import kegel
+    from kegel.supply import contact_loss_at_film_limit
+
+    kw = dict(bearing="32208", speed=f"{speed_rpm:g} rpm", axial_load=f"{AXIAL_LOAD_N:g} N",
+              temperature=f"{TEMPERATURE_K - 273.15:g} degC", oil_level="flooded")
+    cut = contact_loss_at_film_limit(gap_m, **kw)
+    uncut = contact_loss_at_film_limit(0.0, **kw)
+    hyd = {}
+    for method in ("liebrecht", "skf"):
+        r = kegel.Bearing("32208").friction(speed=f"{speed_rpm:g} rpm", axial_load=f"{AXIAL_LOAD_N:g} N",
+                                            temperature=f"{TEMPERATURE_K - 273.15:g} degC",
+                                            lubrication="flooded", hydraulic=method)
+        hyd[method] = float(r.hydraulic_torque_Nm)
+    return {"contact_cut_at_g_Nm": cut["friction_torque_Nm"], "contact_uncut_Nm": uncut["friction_torque_Nm"],
+            "liebrecht_Nm": hyd["liebrecht"], "skf_drag_Nm": hyd["skf"]}
+
+
+def write(rows: list[dict], command: str) -> None:
+    import kegel
+    from kegel.io import atomic_write_json, provenance
+
+    for r in rows:
+        r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"]
+        r["contact_plus_liebrecht_Nm"] = r["contact_uncut_Nm"] + r["liebrecht_Nm"]
+        r["contact_plus_skf_Nm"] = r["contact_uncut_Nm"] + r["skf_drag_Nm"]
+    atomic_write_json(OUT, {"command": command, "point": "32208, FVA 3, 50 degC, flooded, Fa = 1 kN",
+                            "rows": rows, "kegel_version": kegel.__version__, "provenance": provenance()})
+    plot(rows, OUT.with_suffix(".png"))
+
+
+def plot(rows: list[dict], path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = sorted(rows, key=lambda r: r["speed_rpm"])
+    n = [r["speed_rpm"] for r in rows]
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o-", label="contact (cut at g) + CFD")
+    ax.plot(n, [1e3 * r["contact_plus_liebrecht_Nm"] for r in rows], "s--", label="contact + Liebrecht")
+    ax.plot(n, [1e3 * r["contact_plus_skf_Nm"] for r in rows], "^--", label="contact + SKF drag")
+    ax.plot(n, [1e3 * r["cfd_loss_Nm"] for r in rows], "o:", label="CFD alone (beyond g)")
+    ax.set_xlabel("shaft speed [rpm]")
+    ax.set_ylabel("torque at the shaft [mN m]")
+    ax.set_title("32208 flooded, 50 degC, Fa 1 kN: three answers (real rollers)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    tmp = path.with_name("." + path.name + ".tmp.png")
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    tmp.replace(path)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--speeds", type=float, nargs="+", default=[500.0, 1000.0, 2000.0, 4000.0])
+    ap.add_argument("--gap", type=float, default=0.08)
+    ap.add_argument("--cells", type=int, default=3)
+    ap.add_argument("--mesh", default="tiny")
+    ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--report", action="store_true", help="only re-read the stored rows")
+    args = ap.parse_args(argv)
+    command = "benchmarks/cfd_three_answers.py " + " ".join(sys.argv[1:] if argv is None else argv)
+    previous = json.loads(OUT.read_text()).get("rows", []) if OUT.is_file() else []
+    if args.report:
+        write(previous, json.loads(OUT.read_text())["command"] if OUT.is_file() else command)
+        return 0
+    rows: list[dict] = []
+    for rpm in args.speeds:
+        t0 = time.monotonic()
+        r = {"speed_rpm": rpm, "gap_ratio": args.gap, "cells_across_gap": args.cells, "mesh": args.mesh,
+             **run_cfd(rpm, args.gap, args.cells, args.mesh, args.np)}
+        r.update(correlations_and_contact(rpm, r["gap_m"]))
+        r["session_wall_s"] = time.monotonic() - t0
+        rows.append(r)
+        keep = [p for p in previous if p["case"] not in {x["case"] for x in rows}]
+        write(sorted(keep + rows, key=lambda x: (x["gap_ratio"], x["cells_across_gap"], x["speed_rpm"])), command)
+        print(f"{rpm:6g} rpm  CFD {1e3 * r['cfd_loss_Nm']:.1f} mN m  contact+CFD {1e3 * r['contact_plus_cfd_Nm']:.1f}  "
+              f"contact+Liebrecht {1e3 * r['contact_plus_liebrecht_Nm']:.1f}  contact+SKF {1e3 * r['contact_plus_skf_Nm']:.1f}",
+              flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
