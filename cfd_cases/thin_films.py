@@ -30,7 +30,9 @@ bearing data), the roller's edge radius next to the rib (the gap opens from abou
 0.7 mm over 0.7 mm: under 3 % of (a)), the eccentricity of a roller in its pocket (it raises (b)
 as ``1 / sqrt(1 - e^2)`` for a full annulus, Petroff/Sommerfeld), and the pressure-driven part of
 the rib film's dissipation: it is bounded (:func:`rib_film_loss`, ``pressure_flow_bound_W``) and
-reported, not added.
+reported, not added; the Reynolds check (:func:`rib_film_reynolds`) puts it at 5 % of the Couette
+part for the flooded 32208 at 2000 rpm, 50 degC, 1 kN, where the rigid isoviscous film carries
+the rib load at 2.77 um against the contact model's 2.60 um.
 
 Physics and sources
 -------------------

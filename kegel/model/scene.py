@@ -4,6 +4,11 @@ A scene names the bearing, the lubricant, the operating point or sweep, the lubr
 model fidelity. :func:`load_scene` validates it completely before anything runs; every error
 names the file (or ``--set``), the dotted key, the value and what was expected.
 
+The file (after ``--set``) is read into the typed scene model of :mod:`kegel.scene_model`
+(:func:`kegel.scene_model.parse_scene`), the model the Python API and ``kegel init`` build too;
+:func:`validate_scene`, the one validation layer, checks its ranges and cross-checks and
+resolves it into a :class:`Scene`.
+
 Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)::
 
     [scene]
@@ -94,7 +99,7 @@ from ..base.errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
 from ..base.limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
-from .scene_model import (AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
+from .scene_model import (ALLOWED_KEYS, AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
                           MAX_DYNAMIC_OUTPUTS, MAX_OPERATING_POINTS, MIN_OUTPUT_INTERVAL_S, OIL_LEVEL_WORDS,
                           DynamicSettings, LubricationSpec, ModelOptions, OperatingSpec, Reader, SceneSpec, StudySpec,
                           parse_scene)
@@ -129,6 +134,7 @@ MAX_MISALIGNMENT_RAD = 0.01
 #: 10 mm is no longer near a line contact of any bearing kegel models.
 MAX_CONTACT_FILM_LIMIT_M = 0.01
 _OIL_LEVEL_WORDS = OIL_LEVEL_WORDS
+_ALLOWED = ALLOWED_KEYS  # the scene's sections and keys (kegel.scene_model), under their old name
 
 
 @dataclass(frozen=True)

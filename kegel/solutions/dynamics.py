@@ -42,6 +42,7 @@ from ..physics.tribology import cage_speed_rad_s
 D = _core.dynamics
 
 __all__ = [
+    "ATOL_VELOCITY_M_S",
     "DAMPING_TIME_S",
     "STEADY_HOLD_PASSES",
     "STEADY_SIGNALS",
@@ -78,6 +79,12 @@ STEADY_HOLD_PASSES = 1.0
 #: Roller passes over which a trend of the window means may change a signal by at most the
 #: tolerance, whatever the window: a slow ramp is a drift, not a steady state.
 STEADY_TREND_PASSES = 4.0
+
+#: Absolute tolerance of the velocities in the integrator's error test (m/s; the angular rates get
+#: it over the roller radius, the positions 1e-3 of it per rad/s of the start speed + 1 pm).
+#: 1e-7 m/s: the 32216 at 2000 rpm, 6 kN moves its mean torque by +0.007 % against 1e-8 m/s and
+#: takes half the steps (docs/performance.md, Dynamic simulation); 1e-6 m/s moves it by +0.09 %.
+ATOL_VELOCITY_M_S = 1e-7
 
 #: Stiffness-proportional contact damping time when the friction file gives none: d_max = tau x
 #: the contact stiffness at delta_max (Eq. 2). The value and its source (Kraemer) live in
@@ -370,14 +377,16 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              misalignment_rad: float = 0.0, slices: int = 20, method: str = "independent", cage: bool = True,
              output_interval_s: float = 1e-4, average_fraction: float = 0.5, rtol: float = 1e-7,
              steady_tolerance: float = STEADY_TOLERANCE,
-             atol_velocity_m_s: float = 1e-8,
+             atol_velocity_m_s: float = ATOL_VELOCITY_M_S,
              damping_time_s: float | None = None, elements: Sequence[Any] = (), progress: bool = False,
              checkpoint: str | Path | None = None, checkpoint_interval_s: float = 5e-3,
              initial_speed_rad_s: float | None = None, coloured_jacobian: bool = True,
+             integrator_options: dict[str, Any] | None = None,
              raise_on_failure: bool = True, hold_axial: bool = False, tilt_free: bool = False,
              tilt_moment_Nm: float = 0.0,
              max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1,
-             load_profile: Sequence[tuple[float, float, float]] = ()) -> DynamicResult:
+             load_profile: Sequence[tuple[float, float, float]] = (),
+             max_duration_s: float | None = None) -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -385,7 +394,13 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     speed_profile
         (time_s, inner-ring speed in rad/s) points; linear in between, constant after the last.
     duration_s
-        Simulated time.
+        Simulated time (at least; see ``max_duration_s``).
+    max_duration_s
+        Automatic duration: a run whose torques and cage speed have not settled (:func:`settling`)
+        by ``duration_s`` goes on, a quarter of ``duration_s`` at a time, until they settle or the
+        run reaches this cap (at most the scenes' limit of a dynamic run). ``stats["duration_s"]``
+        gives the simulated time, ``stats["extended"]`` whether it went past ``duration_s``. None:
+        exactly ``duration_s``.
     axial_N, axial_offset_m
         Force-controlled axial load (the ring is free axially) or a held axial offset towards the
         apex (the ring is held axially at the quasi-static position for that offset).
@@ -422,6 +437,17 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     max_ring_displacement_m
         The run stops with :class:`SimulationDiverged` when the inner ring moves further: the
         bearing has come apart (far beyond any elastic deflection).
+    atol_velocity_m_s
+        Absolute tolerance of the velocities (:data:`ATOL_VELOCITY_M_S`); velocities and rates
+        have no relative tolerance (a relative one on the orbital speed would not bound the
+        sliding speed that sets the friction).
+    integrator_options
+        Numerical switches of ``kegel._core.dynamics.IntegratorSettings`` by name (for
+        benchmarks and checks): ``structured_linear_solver`` (block-arrow LU of the Newton
+        matrix, default true; false: SUNDIALS' dense LU), ``quadratures_in_state`` (the torque
+        and power integrals as states, default true; false: CVODES' quadratures, one more
+        evaluation of the contacts per step), ``jacobian_max_age_steps`` (0: CVODE's 51),
+        ``max_step_s``, ``max_steps``. Unknown names are an error.
     initial_speed_rad_s
         Speed of the quasi-static initial state (default: the profile's speed at t = 0; with 0 the
         bodies start at rest).
@@ -440,7 +466,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if not (MIN_OUTPUT_INTERVAL_S <= output_interval_s <= duration_s):
         raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
                               f"in [{MIN_OUTPUT_INTERVAL_S:g}, {duration_s:g}] s")
-    if duration_s / output_interval_s > MAX_DYNAMIC_OUTPUTS:
+    if max_duration_s is not None and not duration_s <= max_duration_s <= MAX_DYNAMIC_DURATION_S:
+        raise KegelInputError("<argument>", "max_duration_s", max_duration_s,
+                              f"a time from duration_s = {duration_s:g} s to {MAX_DYNAMIC_DURATION_S:g} s")
+    if max(duration_s, max_duration_s or 0.0) / output_interval_s > MAX_DYNAMIC_OUTPUTS:
         raise KegelInputError("<argument>", "output_interval_s", output_interval_s,
                               f"at most {MAX_DYNAMIC_OUTPUTS} outputs (here {duration_s / output_interval_s:.3g})")
     lubricant_state(lubricant, temperature_K, key="temperature_K")
@@ -523,6 +552,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     st.atol_rate_rad_s = atol_velocity_m_s / g.roller_mean_diameter_m * 2.0
     st.atol_position_m = 1e-3 * atol_velocity_m_s / max(abs(w_start), 1.0) + 1e-12
     st.coloured_jacobian = coloured_jacobian
+    for key, value in (integrator_options or {}).items():
+        if key.startswith("_") or not hasattr(st, key):
+            raise KegelInputError("<argument>", f"integrator_options.{key}", value,
+                                  "an attribute of kegel._core.dynamics.IntegratorSettings")
+        setattr(st, key, value)
     t_start = 0.0
     rows: dict[str, list] = {}
     times: list[float] = []
@@ -548,35 +582,51 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     grid = grid[grid > t_start + 1e-15] if times else grid
     prog = _Progress(t_start, duration_s, progress)
     finished, message, last_ck = True, "", t_start
-    integration_s = 0.0
+    integration_s = integration_cpu_s = 0.0
     pace = _Pace()
-    for tk in grid:
-        if tk > sim.time_s:
-            t_int = time.perf_counter()
-            flag = pace.advance(sim, float(tk))
-            integration_s += time.perf_counter() - t_int
-            if flag != 0:
-                finished, message = False, sim.message
+    end_s = duration_s
+    while True:
+        for tk in grid:
+            if tk > sim.time_s:
+                t_int, c_int = time.perf_counter(), time.process_time()
+                flag = pace.advance(sim, float(tk))
+                integration_s += time.perf_counter() - t_int
+                integration_cpu_s += time.process_time() - c_int
+                if flag != 0:
+                    finished, message = False, sim.message
+                    break
+            out = sim.outputs()
+            yr = np.asarray(sim.state)[model.ring_offset:model.ring_offset + 3]
+            moved = float(np.linalg.norm(yr - y0[model.ring_offset:model.ring_offset + 3]))
+            if moved > max_ring_displacement_m:
+                finished = False
+                message = (f"the inner ring moved {moved * 1e3:.2f} mm from its initial place by t = {sim.time_s * 1e3:.3f} ms "
+                           f"(displacement {np.array2string(yr * 1e3, precision=3)} mm): the bearing comes apart. A single "
+                           f"tapered roller bearing needs an axial load above the axial component of the roller "
+                           f"loads (centrifugal force at speed, Fr tan(alpha_o) under radial load); hold the ring "
+                           f"axially (hold_axial) to model the partner bearing")
                 break
-        out = sim.outputs()
-        yr = np.asarray(sim.state)[model.ring_offset:model.ring_offset + 3]
-        moved = float(np.linalg.norm(yr - y0[model.ring_offset:model.ring_offset + 3]))
-        if moved > max_ring_displacement_m:
-            finished = False
-            message = (f"the inner ring moved {moved * 1e3:.2f} mm from its initial place by t = {sim.time_s * 1e3:.3f} ms "
-                       f"(displacement {np.array2string(yr * 1e3, precision=3)} mm): the bearing comes apart. A single "
-                       f"tapered roller bearing needs an axial load above the axial component of the roller "
-                       f"loads (centrifugal force at speed, Fr tan(alpha_o) under radial load); hold the ring "
-                       f"axially (hold_axial) to model the partner bearing")
+            times.append(float(sim.time_s))
+            states.append(np.asarray(sim.state))
+            quads.append(np.asarray(sim.quadratures))
+            _record(rows, out)
+            prog.update(sim.time_s, sim.last_step_s, sim.steps)
+            if ck is not None and sim.time_s - last_ck >= checkpoint_interval_s - 1e-15:
+                _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows, checkpoint_key)
+                last_ck = sim.time_s
+        # automatic duration: a run that has not settled by duration_s goes on, a quarter of
+        # duration_s at a time, until it settles or reaches max_duration_s
+        if not finished or max_duration_s is None or end_s >= max_duration_s - 1e-15 or len(times) < 2:
             break
-        times.append(float(sim.time_s))
-        states.append(np.asarray(sim.state))
-        quads.append(np.asarray(sim.quadratures))
-        _record(rows, out)
-        prog.update(sim.time_s, sim.last_step_s, sim.steps)
-        if ck is not None and sim.time_s - last_ck >= checkpoint_interval_s - 1e-15:
-            _save_checkpoint(ck, sim.time_s, np.asarray(sim.state), times, states, quads, rows, checkpoint_key)
-            last_ck = sim.time_s
+        tt = np.asarray(times)
+        if settling(tt, np.asarray(quads), g, float(np.interp(tt[-1], prof[:, 0], prof[:, 1])),
+                    output_interval_s=output_interval_s, tol=steady_tolerance).settled:
+            break
+        new_end = min(end_s + max(0.25 * duration_s, 2.0 * output_interval_s), max_duration_s)
+        grid = end_s + output_interval_s * np.arange(1, int((new_end - end_s) / output_interval_s) + 2)
+        grid = np.append(grid[grid < new_end - 0.5 * output_interval_s], new_end)
+        grid = grid[grid > sim.time_s + 1e-15]
+        end_s = new_end
     prog.close()
     t = np.asarray(times)
     series = {k: np.asarray(v, dtype=float) for k, v in rows.items()}
@@ -586,6 +636,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     if finished and ck is not None:
         ck.unlink(missing_ok=True)
     stats = {"initial_state": initial, "resumed_from_s": resumed_from, "integration_wall_s": integration_s,
+             "integration_cpu_s": integration_cpu_s,
+             "duration_s": float(times[-1]) if times else 0.0, "extended": end_s > duration_s,
              "cage_to_inner_speed_pure_rolling": (wc_pure / w_start if w_start else _pure_rolling(g, 1.0)[0]),
              "steps": sim.steps, "rhs_evaluations": sim.rhs_evaluations,
              "jacobian_evaluations": sim.jacobian_evaluations, "state_size": model.state_size,

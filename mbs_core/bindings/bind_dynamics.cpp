@@ -149,6 +149,9 @@ void bind_dynamics(nb::module_& parent) {
       .def_rw("max_step_s", &IntegratorSettings::max_step_s)
       .def_rw("max_steps", &IntegratorSettings::max_steps)
       .def_rw("coloured_jacobian", &IntegratorSettings::coloured_jacobian)
+      .def_rw("structured_linear_solver", &IntegratorSettings::structured_linear_solver)
+      .def_rw("quadratures_in_state", &IntegratorSettings::quadratures_in_state)
+      .def_rw("jacobian_max_age_steps", &IntegratorSettings::jacobian_max_age_steps)
       .def_rw("absolute_velocity_tolerance", &IntegratorSettings::absolute_velocity_tolerance)
       .def_rw("threads", &IntegratorSettings::threads);
   nb::class_<ForceElement>(m, "ForceElement");

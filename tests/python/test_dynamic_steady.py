@@ -247,3 +247,31 @@ def test_the_settled_answer_does_not_depend_on_the_output_interval(setup, start_
     assert abs(s.start - a["window_start_s"]) <= max(s.window, a["settling"]["window_s"]) + 1e-12
     for k in ("outer_ring_torque_Nm", "drive_torque_Nm", "cage_speed_rad_s", "power_input_W"):
         assert b[k] == pytest.approx(a[k], rel=1e-3), k
+
+
+def test_automatic_duration_runs_until_the_signals_settle(setup):
+    """max_duration_s: the ramp 2000 -> 4000 rpm in 3 ms asked for 4 ms only (its transient still
+    going on) goes on until the torques and the cage speed settle, on the same output grid; with
+    a cap too short to settle, it stops at the cap and says it has not settled."""
+    from kegel.dynamics import simulate
+    from kegel.quasi_static import bearing_friction
+
+    g, b, m, lub, fr = setup
+    kw = dict(temperature_K=323.15, speed_profile=[(0.0, 2000 * RPM), (3e-3, 4000 * RPM)], axial_N=6000.0,
+              slices=6, method="independent", output_interval_s=1e-4)
+    short = simulate(g, b, m, lub, fr, duration_s=4e-3, **kw)
+    assert not short.steady["settled"] and not short.stats["extended"]
+    auto = simulate(g, b, m, lub, fr, duration_s=4e-3, max_duration_s=20e-3, **kw)
+    assert auto.steady["settled"], auto.steady["settling"]["reason"]
+    assert auto.stats["extended"] and 4e-3 < auto.stats["duration_s"] < 20e-3
+    assert auto.stats["duration_s"] == pytest.approx(auto.time_s[-1])
+    dt = np.diff(auto.time_s)
+    assert dt.min() > 0.5e-4 and dt.max() < 1e-4 + 1e-12  # the output grid goes on unchanged
+    _, q = bearing_friction(g, b, m, lub, fr, temperature_K=323.15, inner_speed_rad_s=4000 * RPM, axial_N=6000.0,
+                            slices=6, method="independent")
+    assert auto.steady["outer_ring_torque_Nm"] == pytest.approx(q.outer_ring_torque_Nm, rel=0.02)
+    capped = simulate(g, b, m, lub, fr, duration_s=4e-3, max_duration_s=4.5e-3, **kw)
+    assert capped.stats["duration_s"] == pytest.approx(4.5e-3)
+    assert not capped.steady["settled"]
+    with pytest.raises(kegel.KegelInputError, match="max_duration_s"):
+        simulate(g, b, m, lub, fr, duration_s=4e-3, max_duration_s=3e-3, **kw)

@@ -251,6 +251,20 @@ class DynamicData {
   std::vector<Wrench> on_ring;                ///< about the ring's pivot
   std::vector<Wrench> base_cage;              ///< the same at the Jacobian's base state
   std::vector<Wrench> base_ring;
+  /// One part of a roller's contacts: its wrench on the roller and on the other body (part 0:
+  /// outer raceway, no other body; 1: inner raceway and rib, on the inner ring; 2: cage window,
+  /// gravity and force elements, on the cage). parts[3 j + k] from the last evaluation,
+  /// base_parts at the Jacobian's base state (a column that moves only the cage or the inner
+  /// ring re-evaluates only the part it changes).
+  struct PartWrench {
+    Wrench roller, other;
+  };
+  std::vector<PartWrench> parts, base_parts;
+  /// The state of the last complete evaluation of the right-hand side (valid: nothing has
+  /// overwritten its per-roller contributions since): the Jacobian at that state reuses them.
+  std::vector<double> last_y;
+  double last_t = 0.0;
+  bool last_valid = false;
   std::vector<std::vector<SliceGeometry>> geo;  ///< per thread
   std::vector<std::vector<double>> e;            ///< per thread
   std::vector<double> xi;
@@ -271,9 +285,13 @@ int dynamic_rhs(const DynamicModel& model, DynamicData& data, const RingDrive& d
 /// Jacobian df/dy by coloured finite differences: every roller's column c is perturbed at once
 /// (rollers do not touch each other; their effect on cage and ring is kept apart through the
 /// per-roller contributions), the cage's and ring's columns one by one: 12 + 13 + 10
-/// evaluations instead of 12 Z + 23. J is column-major, N x N. f0 = f(t, y).
+/// evaluations instead of 12 Z + 23. A cage column re-evaluates only the cage windows, a ring
+/// column only the inner raceways and ribs (the rest from the base state); the columns of a held
+/// ring translation or tilt are zero. The base state's evaluation is the last one when that was
+/// at (t, y). J is column-major with leading dimension ld (>= N; rows and columns past N are
+/// zero). f0 = f(t, y).
 int dynamic_jacobian(const DynamicModel& model, DynamicData& data, const RingDrive& drive, double t, const double* y,
-                     const double* f0, double* J, double* work) noexcept;
+                     const double* f0, double* J, double* work, int ld = 0) noexcept;
 
 /// A state from the quasi-static solution: rollers at their solved places, turning with the
 /// cage at cage_speed with spins roller_spin (relative to the cage), the ring displaced by ring.
@@ -290,6 +308,16 @@ struct IntegratorSettings {
   double max_step_s = 0.0;           ///< 0: no limit
   long max_steps = 200000;           ///< per advance() call
   bool coloured_jacobian = true;     ///< false: CVODE's own difference quotients (every column)
+  /// With the coloured Jacobian: LU of the Newton matrix in block-arrow form (each roller's block
+  /// coupled only to the cage and the inner ring, about 20 times fewer operations than a dense
+  /// LU for 16 rollers); false: SUNDIALS' dense LU (the same solution to rounding).
+  bool structured_linear_solver = true;
+  /// The quadratures (kQuadratureCount) as states of the ODE, outside its error test, their
+  /// integrands summed in every evaluation of the right-hand side: no extra evaluation per step
+  /// (CVODES' quadratures evaluate the contacts once more at every step's corrected state).
+  /// false: CVODES' quadratures. The two integrals differ by the Newton iteration's tolerance.
+  bool quadratures_in_state = true;
+  long jacobian_max_age_steps = 0;   ///< steps between Jacobian evaluations at most (0: CVODE's 51)
   /// Velocities and rates under absolute tolerances only (atol_velocity_m_s, atol_rate_rad_s):
   /// the friction follows the sliding speed, whose error a relative tolerance on the orbital
   /// speed would not bound.
