@@ -45,8 +45,8 @@ def case_name(gap: float, cells: int, mesh: str, sector: bool) -> str:
 
 def contact_loss_Nm(gap_m: float) -> dict:
     """kegel's contact friction torque of the study point with the rolling force cut off at a
-    film height of ``gap_m`` (kegel.supply.contact_loss_at_film_limit)."""
-    from kegel.supply import contact_loss_at_film_limit  # the contact side of the split
+    film height of ``gap_m`` (kegel.runner.film_limit.contact_loss_at_film_limit)."""
+    from kegel.runner.film_limit import contact_loss_at_film_limit  # the contact side of the split
 
     r = contact_loss_at_film_limit(gap_m, bearing="32208", speed=f"{SPEED_RPM:g} rpm",
                                    axial_load=f"{AXIAL_LOAD_N:g} N", temperature=f"{TEMPERATURE_K - 273.15:g} degC",

@@ -18,12 +18,12 @@ __all__ = ["add_cfd_parser"]
 
 
 def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str):
-    from kegel.data import load_bearing, load_lubricant, load_material
-    from kegel.errors import KegelInputError
-    from kegel.geometry import derive_geometry
-    from kegel.lubricant import lubricant_state
-    from kegel.scene import check_speed, resolve_oil_level
-    from kegel.units import parse_quantity
+    from kegel.model.data import load_bearing, load_lubricant, load_material
+    from kegel.base.errors import KegelInputError
+    from kegel.model.geometry import derive_geometry
+    from kegel.model.lubricant import lubricant_state
+    from kegel.model.scene import check_speed, resolve_oil_level
+    from kegel.base.units import parse_quantity
 
     from .geometry import MESH_LEVELS
     from .run import CfdPoint
@@ -143,9 +143,9 @@ def _case_name(point, level_text: str) -> str:
 
 def _liebrecht(point) -> dict[str, float]:
     from kegel.correlations import hydraulic_torques
-    from kegel.data import load_lubricant, load_material
-    from kegel.geometry import derive_geometry
-    from kegel.lubricant import lubricant_state
+    from kegel.model.data import load_lubricant, load_material
+    from kegel.model.geometry import derive_geometry
+    from kegel.model.lubricant import lubricant_state
 
     from .run import point_bearing
 
@@ -208,7 +208,7 @@ def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
 def _run_one(point, case: Path, args) -> dict[str, Any]:
     import time
 
-    from kegel.io import atomic_write_json
+    from kegel.base.io import atomic_write_json
 
     from .foam import time_dirs
     from .plots import plot_oil_distribution, plot_torque_history
@@ -270,7 +270,7 @@ def _cmd_run(args: argparse.Namespace) -> int:
 
 
 def _cmd_sweep(args: argparse.Namespace) -> int:
-    from kegel.io import atomic_write_json, atomic_write_text
+    from kegel.base.io import atomic_write_json, atomic_write_text
 
     from .plots import plot_sweep
 
@@ -284,17 +284,17 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
         try:
             point.validate()
         except ValueError as exc:
-            from kegel.errors import KegelInputError
+            from kegel.base.errors import KegelInputError
 
             raise KegelInputError("command line", "--speed/--oil-level", f"{level}, "
                                   f"{point.speed_rad_s * 30 / math.pi:.0f} rpm", str(exc)) from None
     # the cases run one after another, in --jobs local processes or as one task each on a Dask
     # cluster (--scheduler); each keeps its own MPI decomposition (--np cores: the task's
     # resources on a cluster whose workers declare "cores", see kegel.parallel.task_resources)
-    from kegel.parallel import connect, default_jobs, map_tasks
+    from kegel.runner.parallel import connect, default_jobs, map_tasks
 
     if args.jobs is not None and args.jobs < 1:
-        from kegel.errors import KegelInputError
+        from kegel.base.errors import KegelInputError
 
         raise KegelInputError("command line", "--jobs", args.jobs, "at least 1 case at a time")
     jobs = args.jobs if args.jobs is not None else max(1, default_jobs() // max(1, args.np))

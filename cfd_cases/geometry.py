@@ -53,7 +53,7 @@ from typing import Any
 
 import numpy as np
 
-from kegel.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO, BearingGeometry
+from kegel.model.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO, BearingGeometry
 
 from .mesh import restore_sigpipe, write_msh22
 

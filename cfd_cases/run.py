@@ -164,7 +164,7 @@ class CfdPoint:
 def kinematics(g, omega_i: float) -> dict[str, float]:
     """Cage speed and roller spin (relative to the cage, about the roller axis small -> large end)
     of apex-matched pure rolling with the outer ring fixed."""
-    from kegel.tribology import cage_speed_rad_s
+    from kegel.physics.tribology import cage_speed_rad_s
 
     omega_c = cage_speed_rad_s(g, omega_i)
     omega_s = -(omega_i - omega_c) * g.inner_raceway_diameter_mid_m / g.roller_mean_diameter_m
@@ -199,15 +199,15 @@ def _bodies(cg: CfdGeometry, cage: bool = True) -> list[dict[str, Any]]:
 def point_bearing(point: CfdPoint):
     """The point's bearing data: its data file when it was given one, else the shipped data of
     its designation."""
-    from kegel.data import load_bearing
+    from kegel.model.data import load_bearing
 
     return load_bearing(point.bearing_file or point.bearing)
 
 
 def _load(point: CfdPoint):
-    from kegel.data import load_lubricant, load_material
-    from kegel.geometry import derive_geometry
-    from kegel.lubricant import lubricant_state
+    from kegel.model.data import load_lubricant, load_material
+    from kegel.model.geometry import derive_geometry
+    from kegel.model.lubricant import lubricant_state
 
     bearing = point_bearing(point)
     g = derive_geometry(bearing, load_material(point.material))
@@ -783,7 +783,7 @@ def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
 def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None] = print,
              progress: bool = True) -> CfdResult:
     """Prepare (or resume) and run the case of ``point``; write ``results.json`` into it."""
-    from kegel.io import atomic_write_json, provenance
+    from kegel.base.io import atomic_write_json, provenance
 
     case = prepare_case(point, case_dir, log=log)
     meta = json.loads((case / "kegel-case.json").read_text())

@@ -403,9 +403,9 @@ def rib_film_loss(g, bearing, lubricant: str, temperature_K: float, inner_speed_
         ``entrainment_speed_m_s`` at the contact point, ``rib_load_N``, ``hertz_semi_axes_m``.
     """
     from kegel import _core
-    from kegel.data import load_lubricant, load_material
-    from kegel.lubricant import lubricant_state
-    from kegel.tribology import axial_roller_loads
+    from kegel.model.data import load_lubricant, load_material
+    from kegel.model.lubricant import lubricant_state
+    from kegel.physics.tribology import axial_roller_loads
 
     w_i = _check("inner_speed_rad_s", inner_speed_rad_s, 1e-3, 1e4, "a shaft speed in rad/s")
     T = _check("temperature_K", temperature_K, 200.0, 500.0, "a temperature in K")
@@ -416,7 +416,7 @@ def rib_film_loss(g, bearing, lubricant: str, temperature_K: float, inner_speed_
     cls = _core.tribology.make_contact_lubricant_state(lub.core, T)
     mat = load_material(material)
     E = _core.reduced_modulus_Pa(mat.core, mat.core)
-    from kegel.contact import RibContact
+    from kegel.physics.contact import RibContact
 
     rc = RibContact(g, bearing, mat)
     hz = _core.contact.hertz_point_contact_load(rc.Rx_m, rc.Ry_m, E, Q)
@@ -543,8 +543,8 @@ def rib_film_reynolds(g, bearing, lubricant: str, temperature_K: float, inner_sp
     """
     from scipy.optimize import brentq
 
-    from kegel.lubricant import lubricant_state
-    from kegel.tribology import axial_roller_loads
+    from kegel.model.lubricant import lubricant_state
+    from kegel.physics.tribology import axial_roller_loads
 
     w_i = _check("inner_speed_rad_s", inner_speed_rad_s, 1e-3, 1e4, "a shaft speed in rad/s")
     Q = (axial_roller_loads(g, REFERENCE_AXIAL_LOAD_N)["rib_N"] if rib_load_N is None
@@ -583,7 +583,7 @@ def rib_film_reynolds(g, bearing, lubricant: str, temperature_K: float, inner_sp
 
 def _inside_shell(g, p: np.ndarray) -> np.ndarray:
     """Whether points ``p`` (..., 3) lie inside the cage shell (its (x, r) section)."""
-    from kegel.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO
+    from kegel.model.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO
 
     a2 = np.asarray(g.roller_axis_unit(), float)
     n2 = np.array([-a2[1], a2[0]])
@@ -722,7 +722,7 @@ def thin_film_losses(g, bearing, *, lubricant: str, temperature_K: float, inner_
         ``loss_torque_Nm`` (at the shaft, all terms), ``power_loss_W``, ``parts_Nm`` (``rib``,
         ``pocket_sides``, ``pocket_ends``) and the details of each term (``rib``, ``pocket``).
     """
-    from kegel.lubricant import lubricant_state
+    from kegel.model.lubricant import lubricant_state
 
     rib = rib_film_loss(g, bearing, lubricant, temperature_K, inner_speed_rad_s, clearance_m,
                         rib_load_N=rib_load_N, cells=cells, material=material)

@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import math
 
-from ..geometry import BearingGeometry
-from ..lubricant import LubricantState
-from ..tribology import cage_speed_rad_s as pure_rolling_cage_speed
+from ..model.geometry import BearingGeometry
+from ..model.lubricant import LubricantState
+from ..physics.tribology import cage_speed_rad_s as pure_rolling_cage_speed
 from .aihara import AiharaTorque, aihara_running_torque
 from .common import HydraulicTorques, immersed_fraction
 from .liebrecht import (
@@ -107,8 +107,8 @@ def hydraulic_torques(
     if correlation not in CORRELATIONS:
         raise ValueError(f"correlation = {correlation!r}: expected one of {', '.join(CORRELATIONS)}")
     # the scenes' speed limit n d_m (0 allowed: a dynamic run starts from rest)
-    from ..errors import KegelInputError
-    from ..scene import _speed_limit_text, max_speed_rpm
+    from ..base.errors import KegelInputError
+    from ..model.scene import _speed_limit_text, max_speed_rpm
 
     if not (math.isfinite(shaft_speed_rad_s) and abs(shaft_speed_rad_s) * 30.0 / math.pi <= max_speed_rpm(geometry)):
         raise KegelInputError("<argument>", "shaft_speed_rad_s", shaft_speed_rad_s,

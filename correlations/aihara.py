@@ -49,9 +49,9 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from ..errors import KegelInputError
-from ..geometry import BearingGeometry
-from ..lubricant import LubricantState
+from ..base.errors import KegelInputError
+from ..model.geometry import BearingGeometry
+from ..model.lubricant import LubricantState
 
 __all__ = ["AiharaTorque", "MU_0", "aihara_moment_per_roller_Nm", "aihara_running_torque", "aihara_thermal_factor",
            "vogel_viscosity_temperature_coefficient_1_K",
@@ -146,7 +146,7 @@ def aihara_running_torque(g: BearingGeometry, lub: LubricantState, *, speed_rad_
     KegelInputError
         A radial load, a load or speed that is not positive and finite.
     """
-    from ..tribology import cage_speed_rad_s
+    from ..physics.tribology import cage_speed_rad_s
 
     if radial_load_N != 0.0:
         raise KegelInputError("<argument>", "radial_load_N", radial_load_N,

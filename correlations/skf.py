@@ -77,9 +77,9 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from ..data import BearingData
-from ..errors import KegelInputError
-from ..limits import check_kinematic_viscosity, check_speed_factor
+from ..model.data import BearingData
+from ..base.errors import KegelInputError
+from ..base.limits import check_kinematic_viscosity, check_speed_factor
 
 __all__ = [
     "DRAG_EDITIONS",

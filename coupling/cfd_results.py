@@ -16,7 +16,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-from ..errors import KegelInputError
+from ..base.errors import KegelInputError
 
 __all__ = ["BALANCE_LIMIT", "balance_of", "cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
 

@@ -55,8 +55,8 @@ from typing import Any, Sequence
 import numpy as np
 
 from .. import _core
-from ..errors import KegelInputError
-from ..geometry import BearingGeometry
+from ..base.errors import KegelInputError
+from ..model.geometry import BearingGeometry
 
 __all__ = ["CfdFlowForceLaw", "FlowForceLaw", "PowerLaw", "body_drags", "cfd_model_key", "cfd_sweep", "fit_exponent",
            "flow_forces_from_cfd", "flow_forces_from_correlation", "orbit_radius_m", "roller_axis_z"]

@@ -51,17 +51,17 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
-from .errors import KegelInputError
-from .units import KINDS, parse_quantity
+from .model.data import BearingData, LubricantData, MaterialData, load_bearing, load_lubricant, load_material
+from .base.errors import KegelInputError
+from .base.units import KINDS, parse_quantity
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas
     from matplotlib.figure import Figure
 
-    from .geometry import BearingGeometry
-    from .scene import Scene
-    from .scene_model import LubricationSpec, OperatingSpec, SceneSpec, Sweep
+    from .model.geometry import BearingGeometry
+    from .model.scene import Scene
+    from .model.scene_model import LubricationSpec, OperatingSpec, SceneSpec, Sweep
 
 __all__ = ["Bearing", "FrictionResult"]
 
@@ -143,7 +143,7 @@ class Bearing:
 
     def __init__(self, designation: str | Path, *, lubricant: str | Path = "FVA3",
                  material: str | Path = "bearing_steel", fidelity: str = "default") -> None:
-        from .scene import FIDELITY_PRESETS
+        from .model.scene import FIDELITY_PRESETS
 
         self._designation = _name_argument(designation, "designation", "a bearing designation such as '32216' or "
                                            "the path of a bearing .toml file")
@@ -167,7 +167,7 @@ class Bearing:
     @cached_property
     def geometry(self) -> "BearingGeometry":
         """The bearing's derived internal geometry (:func:`kegel.derive_geometry`)."""
-        from .geometry import derive_geometry
+        from .model.geometry import derive_geometry
 
         return derive_geometry(self.data, self.material)
 
@@ -192,7 +192,7 @@ class Bearing:
             An argument that is not what it should be (type, unit, grammar, word); the message
             names it. Ranges and cross-checks: :func:`kegel.scene.validate_scene`.
         """
-        from .scene_model import BearingSpec, LubricantSpec, ModelOptions, SceneSpec
+        from .model.scene_model import BearingSpec, LubricantSpec, ModelOptions, SceneSpec
 
         given = {k: v for k, v in locals().items() if k in _QUANTITIES or k in UNIT_KEYWORDS}
         operating, texts = _operating_spec(given)
@@ -288,8 +288,8 @@ class Bearing:
             A bad argument (wrong unit, bare number, out of range, unknown word); the message
             names it.
         """
-        from .run import run_scene
-        from .scene import validate_scene
+        from .runner.run import run_scene
+        from .model.scene import validate_scene
 
         args = {k: v for k, v in locals().items() if k not in ("self", "run_scene", "validate_scene", "uncertainty")}
         spec = self.spec(**args)
@@ -485,7 +485,7 @@ class FrictionResult:
             matplotlib.use("Agg")  # writing a file needs no window
         import matplotlib.pyplot as plt
 
-        from .plots import PlotMeta, build_figures, check_figure_path, save_figure
+        from .outputs.plots import PlotMeta, build_figures, check_figure_path, save_figure
 
         keys = {"torque": "torque_plot", "breakdown": "breakdown_plot", "loads": "loads_plot"}
         if which not in keys:
@@ -551,7 +551,7 @@ def _operating_spec(given: dict[str, Any]) -> tuple["OperatingSpec", dict[str, A
     """The typed ``[operating]`` table from the quantity arguments (``given``: every quantity
     keyword and unit-named keyword with its value, None when not given), each value read once;
     and the table as a scene file would write it."""
-    from .scene_model import OperatingSpec
+    from .model.scene_model import OperatingSpec
 
     sweeps: dict[str, Sweep] = {}
     texts: dict[str, Any] = {}
@@ -599,7 +599,7 @@ def _quantity_sweep(value: Any, key: str, name: str) -> tuple["Sweep", str | lis
     """An operating quantity given with its unit (a string, checked by the grammar of
     :mod:`kegel.units`, or a pint quantity), or a list of them: its SI values, named by the
     argument, and its scene text (a pint quantity as its SI value with the SI unit)."""
-    from .scene_model import Sweep
+    from .model.scene_model import Sweep
 
     items = _items(value, key)
     if items is not None:
@@ -628,7 +628,7 @@ def _one_quantity(value: Any, key: str, name: str) -> tuple[float, str]:
 
 def _unit_keyword_sweep(value: Any, keyword: str) -> tuple["Sweep", str | list[str]]:
     """A number (or a list of them) of a keyword that names its unit: SI values and scene text."""
-    from .scene_model import Sweep
+    from .model.scene_model import Sweep
 
     items = _items(value, keyword)
     if items is not None:
@@ -662,7 +662,7 @@ def _is_pint_quantity(value: Any) -> bool:
 def _lubrication_spec(lubrication: Any) -> "LubricationSpec":
     """The ``lubrication`` argument as the typed lubrication (the oil level is checked against
     the bearing by the validation)."""
-    from .scene_model import LubricationSpec
+    from .model.scene_model import LubricationSpec
 
     expected = ("'minimum_quantity' or the oil level of an oil bath: 'flooded', 'shaft_center', 'half_roller' or a "
                 "height above the lowest point of the outer diameter with its unit, e.g. '40 mm' (or a pint quantity)")
@@ -720,7 +720,7 @@ def _as_argument_error(exc: KegelInputError, used: dict[str, str] | None = None)
 def _with_skf_drag(scene: "Scene", point: dict[str, Any]) -> dict[str, Any]:
     """A point's record with the SKF drag moment as its hydraulic loss (as a study adds it)."""
     from .correlations import hydraulic_torques
-    from .lubricant import lubricant_state
+    from .model.lubricant import lubricant_state
 
     state = lubricant_state(scene.lubricant, point["temperature_K"], source=scene.source, key="temperature")
     h = hydraulic_torques("skf", scene.geometry, state, shaft_speed_rad_s=point["speed_rad_s"],

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from kegel.supply import contact_loss_at_film_limit
+from kegel.runner.film_limit import contact_loss_at_film_limit
 
 ROOT = Path(__file__).resolve().parents[2]
 STUDY = ROOT / "benchmarks" / "results" / "cfd_gap_study.json"

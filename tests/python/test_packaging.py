@@ -40,7 +40,8 @@ def test_wheel_build_contains_everything(tmp_path):
     assert res.returncode == 0, res.stdout[-3000:] + res.stderr[-3000:]
     (wheel,) = tmp_path.glob("kegel-*.whl")
     names = zipfile.ZipFile(wheel).namelist()
-    for must in ("kegel/__init__.py", "kegel/cli.py", "kegel/correlations/__init__.py", "kegel/coupling/__init__.py",
-                 "kegel/cfd_cases/__init__.py", "kegel/data/bearings/32216.toml", "kegel/data/lubricants/FVA3.toml"):
+    for must in ("kegel/__init__.py", "kegel/cli/main.py", "kegel/model/scene.py", "kegel/runner/run.py",
+                 "kegel/correlations/__init__.py", "kegel/coupling/__init__.py", "kegel/cfd_cases/__init__.py",
+                 "kegel/data/bearings/32216.toml", "kegel/data/lubricants/FVA3.toml"):
         assert must in names, must
     assert any(n.startswith("kegel/_core") and n.endswith(".so") for n in names)

@@ -14,10 +14,10 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Callable
 
-from . import _core
-from ._toml import read_toml, require_number, require_str, require_table
-from .errors import KegelInputError
-from .units import parse_quantity
+from .. import _core
+from ..base._toml import read_toml, require_number, require_str, require_table
+from ..base.errors import KegelInputError
+from ..base.units import parse_quantity
 from .estimate import (BoundaryDimensions, EstimateError, ReferenceDesign, estimate_internal_geometry,
                        estimate_oil)
 
@@ -41,7 +41,7 @@ __all__ = [
     "load_material",
 ]
 
-DATA_DIR = Path(__file__).resolve().parent / "data"
+DATA_DIR = Path(__file__).resolve().parents[1] / "data"  # kegel/data, beside kegel/model
 #: The table of ISO 355 metric series (boundary dimensions and ratings from one catalogue); its
 #: bearings get their internal geometry estimated (:mod:`kegel.estimate`).
 SERIES_TABLE = DATA_DIR / "bearing_series" / "iso355_metric.toml"

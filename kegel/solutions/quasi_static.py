@@ -19,11 +19,11 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
-from .data import BearingData, MaterialData
-from .errors import KegelInputError, KegelSolverError
-from .geometry import BearingGeometry
-from .tribology import cage_speed_rad_s as pure_rolling_cage_speed
+from .. import _core
+from ..model.data import BearingData, MaterialData
+from ..base.errors import KegelInputError, KegelSolverError
+from ..model.geometry import BearingGeometry
+from ..physics.tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
 Q = _core.quasi_static
 
@@ -31,9 +31,7 @@ __all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "MAX_
            "load_distribution", "plausibility_failures"]
 
 
-#: Most slices per roller/raceway contact: the C++ line contact's limit
-#: (mbs_core/src/line_contact.cpp, LineContactModel); the scene's ``model.slices`` uses it too.
-MAX_SLICES = 400
+from ..model.options import MAX_SLICES  # noqa: E402  (the scene's limit too: kegel.model.options)
 
 
 def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, *, slices: int = 30,
@@ -138,7 +136,7 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
             f"Fa / Fr > tan(alpha_o) = {math.tan(g.cup_angle_rad):.3f} for a single tapered roller bearing "
             f"(here {axial_N / radial_N:.3f}: the inner ring would lift off); use a displacement-controlled "
             f"axial offset for such load cases")
-    from .scene import check_operating_point  # the scenes' ranges of the loads (C0r included)
+    from ..model.scene import check_operating_point  # the scenes' ranges of the loads (C0r included)
 
     check_operating_point(bearing, g, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
                           tilt_moment_Nm=tilt_moment_Nm if tilt_free else 0.0, misalignment_rad=misalignment_rad)
@@ -297,7 +295,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                               "either a tilt moment (the ring tilts freely) or a misalignment (its tilt imposed), not both")
     # the ranges of a scene's operating point (temperature of the lubricant data, speed limit
     # n d_m, loads, C0r): a public function that takes SI floats checks what a scene checks
-    from .scene import check_operating_point
+    from ..model.scene import check_operating_point
 
     check_operating_point(bearing, g, lubricant=lubricant, temperature_K=temperature_K,
                           speed_rad_s=inner_speed_rad_s, axial_N=axial_N, axial_offset_m=axial_offset_m,

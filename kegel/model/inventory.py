@@ -11,9 +11,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .data import DATA_DIR, load_bearing, load_lubricant, load_material
-from .errors import KegelInputError
-from .io import atomic_write_text
-from ._toml import read_toml
+from ..base.errors import KegelInputError
+from ..base.io import atomic_write_text
+from ..base._toml import read_toml
 
 if TYPE_CHECKING:  # pragma: no cover
     from .scene_model import SceneSpec
@@ -30,7 +30,7 @@ KINDS = {
     "examples": "example scenes (examples/ of a source tree)",
 }
 
-EXAMPLES_DIR = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES_DIR = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _first_comment(path: Path) -> str:

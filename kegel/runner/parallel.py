@@ -41,7 +41,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable, Iterator, Sequence
 
-from . import _core
+from .. import _core
 
 __all__ = ["MAX_TASKS_PER_CHILD", "QUASI_STATIC_CHAIN", "connect", "default_jobs", "effective_jobs", "map_tasks",
            "point_blocks", "solve_blocks", "task_resources"]
@@ -95,7 +95,7 @@ def effective_jobs(jobs: int | None, n_tasks: int, client: Any = None) -> int:
     KegelInputError
         ``jobs`` is not a whole number >= 1, or is given with a Dask client.
     """
-    from .errors import KegelInputError
+    from ..base.errors import KegelInputError
 
     if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1):
         raise KegelInputError("<argument>", "jobs", jobs, "a whole number of processes, at least 1 (None: every core)")
@@ -113,7 +113,7 @@ def connect(scheduler: str) -> Any:
     KegelInputError
         dask.distributed is not installed, or the scheduler cannot be reached.
     """
-    from .errors import KegelInputError
+    from ..base.errors import KegelInputError
 
     try:
         from distributed import Client
@@ -140,7 +140,7 @@ def task_resources(client: Any, cores: int) -> dict[str, int] | None:
     KegelInputError
         The workers declare ``cores`` but none has ``cores`` of them (the task would wait forever).
     """
-    from .errors import KegelInputError
+    from ..base.errors import KegelInputError
 
     workers = client.scheduler_info().get("workers", {})
     have = [w.get("resources", {}).get("cores") for w in workers.values()]
@@ -168,7 +168,7 @@ def _solve(payload: _Payload, indices: Sequence[int]) -> list[tuple[int, dict[st
     """Solve one chain of points (in a worker): each point's record as ``run_scene`` makes it
     (kegel.run._solve_point), warm-started from the point before it in the chain."""
     from . import run as R
-    from .quasi_static import bearing_model
+    from ..solutions.quasi_static import bearing_model
 
     scene, fid = payload.scene, payload.fidelity
     friction = R._friction(fid)

@@ -66,7 +66,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, TextIO
 
-from .coupling.cfd_results import BALANCE_LIMIT as CFD_BALANCE_LIMIT
+from ..coupling.cfd_results import BALANCE_LIMIT as CFD_BALANCE_LIMIT
 
 __all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables",
            "warnings_once_per_command"]

@@ -25,19 +25,19 @@ from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
-from .correlations import hydraulic_torques
-from .dynamics import CONTACTS, MECHANISMS
-from .io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
-from .lubricant import lubricant_state
+from ..correlations import hydraulic_torques
+from ..solutions.dynamics import CONTACTS, MECHANISMS
+from ..base.io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
+from ..model.lubricant import lubricant_state
 from .parallel import effective_jobs, point_blocks, solve_blocks
-from .errors import KegelSolverError
-from .dynamics import SimulationDiverged
-from .point_warnings import Warning_, WarningLog, point_warnings
-from .quasi_static import bearing_friction, bearing_model
-from .study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_rows
-from .scene import Fidelity, Scene, static_equivalent_load_N
-from .tribology import cage_speed_rad_s, load_friction
-from . import _core
+from ..base.errors import KegelSolverError
+from ..solutions.dynamics import SimulationDiverged
+from ..outputs.point_warnings import Warning_, WarningLog, point_warnings
+from ..solutions.quasi_static import bearing_friction, bearing_model
+from ..outputs.study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_rows
+from ..model.scene import Fidelity, Scene, static_equivalent_load_N
+from ..physics.tribology import cage_speed_rad_s, load_friction
+from .. import _core
 
 if TYPE_CHECKING:  # pragma: no cover
     from .uncertainty import UncertaintyOptions
@@ -116,7 +116,7 @@ def run_scene(scene: Scene, output_dir: str | Path | None = None, *, progress: b
 
 def _uncertainty_options(uncertainty: "bool | UncertaintyOptions | None") -> "UncertaintyOptions | None":
     """The uncertainty options of a run (None: no band)."""
-    from .errors import KegelInputError
+    from ..base.errors import KegelInputError
     from .uncertainty import UncertaintyOptions
 
     if uncertainty is None or uncertainty is False:
@@ -385,9 +385,9 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False, un
     """Take the output folder (lock, staging folder, stream of finished points); an interrupted
     run of the same scene, fidelity and kegel version resumes from the points it finished, each
     record checked (:func:`_check_record`)."""
-    from . import __version__
-    from .errors import KegelInputError
-    from .io import OutputLocked, OutputRefused, RunFolder
+    from ..base.version import __version__
+    from ..base.errors import KegelInputError
+    from ..base.io import OutputLocked, OutputRefused, RunFolder
 
     # the scene as written, less what does not change a result (the thread count)
     written = json.loads(json.dumps(scene.resolved))
@@ -550,7 +550,7 @@ def _skf_point(scene: Scene, op, state, axial_N: float) -> dict[str, Any] | None
     """The SKF catalogue model's frictional moment at a point (an independent engineering model
     beside kegel's: its rolling + sliding moment against kegel's contact friction, its drag
     against the hydraulic loss), or None for a bearing series without SKF constants."""
-    from .correlations.skf import SERIES_CONSTANTS, skf_bearing, skf_friction
+    from ..correlations.skf import SERIES_CONSTANTS, skf_bearing, skf_friction
 
     b = scene.bearing
     if str(b.designation)[:3] not in SERIES_CONSTANTS:
@@ -576,7 +576,7 @@ def _point_friction(scene: Scene, friction, op, lubrication=None):
     """The friction parameters of one operating point with the inlet supply of its raceway
     contacts (:func:`kegel.supply.lubricant_supply`) for ``lubrication`` (default: the scene's;
     a study's own point: flooded contacts), and that supply."""
-    from .supply import lubricant_supply
+    from ..coupling.supply import lubricant_supply
 
     lub = lubrication
     supply_model = scene.fidelity.lubricant_supply
@@ -597,7 +597,7 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
     supply: a lubrication whose contacts are flooded reuses the point's solution (flooded
     contacts), any other is solved again (quasi-static; a dynamic study keeps the point's
     friction and says so in ``note``)."""
-    from .study import case_name
+    from ..outputs.study import case_name
 
     out: dict[str, Any] = {}
     for lub in scene.study.cases:
@@ -642,7 +642,7 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
     :class:`kegel.scene.Fidelity` (named ``auto:<preset>``, hydraulic options kept) and a record of
     the comparison: per level the torques, the largest deviation from ``fine`` and the runtime.
     """
-    from .scene import FIDELITY_PRESETS
+    from ..model.scene import FIDELITY_PRESETS
 
     friction = _friction(scene.fidelity)
     ops = scene.operating_points
@@ -669,8 +669,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
     checkpoint after an interrupt)."""
-    from .coupling import flow_forces_from_cfd, flow_forces_from_correlation
-    from .dynamics import simulate, write_result
+    from ..coupling import flow_forces_from_cfd, flow_forces_from_correlation
+    from ..solutions.dynamics import simulate, write_result
 
     g, b, m, fid, dyn = scene.geometry, scene.bearing, scene.material, scene.fidelity, scene.dynamic
     if fid.rib_model == "cell":
@@ -800,7 +800,7 @@ def _not_settled(steady: dict[str, Any], duration_s: float) -> str:
 
 def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
     """The CFD results of ``[model] cfd_results``, read once per run (None without them)."""
-    from .coupling import read_cfd_results
+    from ..coupling import read_cfd_results
 
     if scene.fidelity.hydraulic != "cfd":
         return None
@@ -808,14 +808,14 @@ def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
 
 
 def _balance_of(cfd: dict[str, Any]) -> float | None:
-    from .coupling.cfd_results import balance_of
+    from ..coupling.cfd_results import balance_of
 
     return balance_of(cfd)
 
 
 def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tuple[dict[str, Any], Path]:
     """The ``kegel cfd run`` result of an operating point, among ``runs`` (:func:`_read_cfd_runs`)."""
-    from .coupling import find_cfd_result
+    from ..coupling import find_cfd_result
 
     lub = scene.lubrication
     return find_cfd_result(scene.fidelity.cfd_results, bearing=scene.bearing.designation,
@@ -892,6 +892,6 @@ SUMMARY_FILES = ("results.json", "results.csv", "torque.png", "breakdown.png", "
 
 def _plots(scene: Scene, points: list[dict[str, Any]], out: Path) -> dict[str, str]:
     """torque.png, breakdown.png and roller_loads_and_slip.png (see :mod:`kegel.plots`)."""
-    from .plots import plot_meta_from_scene, run_plots
+    from ..outputs.plots import plot_meta_from_scene, run_plots
 
     return run_plots(points, plot_meta_from_scene(scene), out)

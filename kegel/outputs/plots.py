@@ -32,13 +32,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Sequence, TypedDict
 
-from .dynamics import CONTACTS, MECHANISMS
+from ..solutions.dynamics import CONTACTS, MECHANISMS
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from .scene import Scene
+    from ..model.scene import Scene
 
 __all__ = [
     "AXES",
@@ -691,7 +691,7 @@ def check_figure_path(path: str | Path, *, source: str = "command line", key: st
         ``path`` is an existing folder, its suffix is not one of :data:`FIGURE_SUFFIXES`, or its
         folder does not exist.
     """
-    from .errors import KegelInputError
+    from ..base.errors import KegelInputError
 
     p = Path(path)
     names = ", ".join(FIGURE_SUFFIXES)
@@ -715,7 +715,7 @@ def save_figure(fig: "Figure", path: str | Path, dpi: int = 110) -> str:
     str
         The path written.
     """
-    from .io import atomic_save
+    from ..base.io import atomic_save
 
     return str(atomic_save(path, lambda tmp: fig.savefig(tmp, dpi=dpi)))
 

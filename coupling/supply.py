@@ -50,7 +50,7 @@ The contact / hydraulic boundary g (``model.contact_film_limit``): the contact m
 within film height ``g`` of each line contact and a CFD owns the rest, so the contact's rolling
 force is that of an inlet cut at the gap ``g``: Eq. 44 with ``S = g / h``, ``h`` the slice's
 flooded isothermal film. With a supply as well, the more restrictive inlet (the smaller ``S``)
-wins, slice by slice (``mbs_core/src/slice.cpp``). :func:`contact_loss_at_film_limit` gives the
+wins, slice by slice (``mbs_core/src/slice.cpp``). :func:`kegel.runner.film_limit.contact_loss_at_film_limit` gives the
 contact friction of a point at a given ``g`` (the contact half of the CFD gap study).
 """
 
@@ -60,8 +60,8 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from .errors import KegelInputError
-from .correlations.skf import K_RS as SKF_K_RS
+from ..base.errors import KegelInputError
+from ..correlations.skf import K_RS as SKF_K_RS
 
 __all__ = [
     "K_RS",
@@ -69,7 +69,6 @@ __all__ = [
     "SUPPLY_MODELS",
     "STARVATION_FACTOR_AT_S2",
     "ContactSupply",
-    "contact_loss_at_film_limit",
     "immersed_fraction",
     "inlet_gap_ratio_for_factor",
     "lubricant_supply",
@@ -81,9 +80,7 @@ __all__ = [
 K_RS: dict[str, float] = {**SKF_K_RS, "minimum_quantity": SKF_K_RS["oil_air"], "grease": SKF_K_RS["oil_air"]}
 #: SKF's bearing-type geometry constant K_Z of tapered roller bearings.
 K_Z_TAPERED_ROLLER = 6.0
-#: Supply models of a scene's ``model.lubricant_supply``: ``kinematic_replenishment`` (this
-#: module, the default) or ``flooded`` (every raceway contact fully flooded: kegel before it).
-SUPPLY_MODELS = ("kinematic_replenishment", "flooded")
+from ..model.options import SUPPLY_MODELS  # noqa: E402  (the scene checks them: kegel.model.options)
 _A, _B, _C = 162.8, 193.1, 1257.0   # Biboulet-Houpert Part 1, Eq. 44
 #: Eq. 44 at S = 2, the most starved inlet Biboulet and Houpert computed.
 STARVATION_FACTOR_AT_S2 = (4.0 + 2.0 * _A) / (4.0 + 2.0 * _B + _C)
@@ -235,40 +232,3 @@ def lubricant_supply(geometry: Any, bearing: Any, *, mode: str, oil_level_m: flo
         out.update({f"immersed_fraction_{ring}": x, f"rolling_force_factor_{ring}": starvation_factor(S),
                     f"inlet_gap_ratio_{ring}": S, f"clamped_{ring}": clamped})
     return ContactSupply(model=model, mode=mode, oil_level_m=oil_level_m, K_rs=K_rs, phi_rs=phi, **out)
-
-
-def contact_loss_at_film_limit(film_limit_m: float, *, bearing: str = "32208", speed: str = "2000 rpm",
-                               axial_load: str = "1 kN", temperature: str = "50 degC", lubricant: str = "FVA3",
-                               oil_level: str = "flooded", fidelity: str = "default") -> dict[str, Any]:
-    """The contact friction of one operating point with the contact / hydraulic boundary at film
-    height ``film_limit_m`` (``model.contact_film_limit``): the contact half of the CFD gap study
-    (contact loss + CFD loss against ``1/sqrt(g)``).
-
-    The point is solved as ``kegel run`` solves a scene (quasi-static, oil bath at ``oil_level``
-    with the supply model, no hydraulic loss); ``film_limit_m = 0`` gives the uncut contact.
-
-    Returns
-    -------
-    dict
-        ``friction_torque_Nm`` (the drive torque of the contacts), ``ehl_rolling_torque_Nm`` (its
-        Biboulet-Houpert part), ``torque_by_mechanism_Nm``, ``torque_by_contact_Nm``,
-        ``contact_film_limit_m``, ``lubricant_supply``, ``converged``.
-    """
-    from .run import run_scene
-    from .scene import scene_from_dict
-
-    if not (math.isfinite(film_limit_m) and film_limit_m >= 0.0):
-        raise KegelInputError("<argument>", "film_limit_m", film_limit_m, "a film height >= 0 in m (0: no cut-off)")
-    model: dict[str, Any] = {"fidelity": fidelity, "hydraulic": "none"}
-    if film_limit_m > 0.0:
-        model["contact_film_limit"] = f"{film_limit_m * 1e3!r} mm"
-    raw = {"bearing": {"designation": bearing}, "lubricant": {"name": lubricant},
-           "operating": {"axial_load": axial_load, "speed": speed, "temperature": temperature},
-           "lubrication": {"mode": "oil_bath", "oil_level": oil_level}, "model": model}
-    scene = scene_from_dict(raw)
-    p = run_scene(scene, progress=False, write=False).points[0]
-    return {"contact_film_limit_m": film_limit_m, "friction_torque_Nm": p["friction_torque_Nm"],
-            "ehl_rolling_torque_Nm": (p.get("torque_by_mechanism_Nm") or {}).get("ehl_rolling"),
-            "torque_by_mechanism_Nm": p.get("torque_by_mechanism_Nm"),
-            "torque_by_contact_Nm": p.get("torque_by_contact_Nm"),
-            "lubricant_supply": p.get("lubricant_supply"), "converged": p.get("converged")}

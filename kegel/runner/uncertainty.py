@@ -36,10 +36,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .errors import KegelInputError
+from ..base.errors import KegelInputError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .scene import Fidelity, Scene
+    from ..model.scene import Fidelity, Scene
 
 __all__ = ["CROWN_DROP_FRACTION", "SLICE_MODELS", "UncertaintyOptions", "loaded_length_m", "point_uncertainty"]
 
@@ -96,8 +96,8 @@ def loaded_length_m(bearing, geometry, material, load_N: float, *, slices: int =
     slices, method
         Slices of the line-contact solution and the slice model.
     """
-    from . import _core
-    from .contact import roller_profile
+    from .. import _core
+    from ..physics.contact import roller_profile
 
     if not (math.isfinite(load_N) and load_N > 0.0):
         raise KegelInputError("<argument>", "load_N", load_N, "a positive contact load in N")

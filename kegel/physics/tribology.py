@@ -20,11 +20,11 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
-from ._toml import read_toml, require_number, require_str, require_table
-from .data import DATA_DIR, BearingData, LubricantData, MaterialData, _resolve
-from .errors import KegelInputError
-from .geometry import BearingGeometry
+from .. import _core
+from ..base._toml import read_toml, require_number, require_str, require_table
+from ..model.data import DATA_DIR, BearingData, LubricantData, MaterialData, _resolve
+from ..base.errors import KegelInputError
+from ..model.geometry import BearingGeometry
 
 T = _core.tribology
 
@@ -118,8 +118,7 @@ class FrictionData:
             raise KegelInputError(self.source_file, "(parameters)", "", str(exc)) from None
 
 
-#: Thermal reductions of the EHL rolling force (FrictionData.core's rolling_thermal).
-ROLLING_THERMAL_MODELS = ("aihara", "zhu_cheng", "off")
+from ..model.options import ROLLING_THERMAL_MODELS  # noqa: E402  (the scene checks them: kegel.model.options)
 
 
 @lru_cache(maxsize=16)
@@ -170,7 +169,7 @@ def cage_speed_rad_s(g: BearingGeometry, inner_speed_rad_s: float) -> float:
         ``inner_speed_rad_s`` not a finite number with ``|n| d_m`` within
         :data:`kegel.limits.MAX_SPEED_FACTOR_RPM_MM` (0 is accepted: a ring at rest).
     """
-    from .limits import check_speed_factor
+    from ..base.limits import check_speed_factor
 
     inner_speed_rad_s = check_speed_factor(inner_speed_rad_s, g.pitch_diameter_m, source="<argument>",
                                            key="inner_speed_rad_s", designation=str(g.designation))
@@ -187,7 +186,7 @@ def axial_roller_loads(g: BearingGeometry, axial_load_N: float) -> dict[str, flo
     ``Q_i = (Q_o cos(alpha_o) + Q_rib sin(phi_rib)) / cos(alpha_i)``, ``phi_rib`` the angle of
     the rib normal to the bearing axis.
     """
-    from .scene import operating_range_error  # the scenes' axial-load range
+    from ..model.scene import operating_range_error  # the scenes' axial-load range
 
     expected = operating_range_error("axial_load", axial_load_N, g)
     if expected is not None:
@@ -286,8 +285,8 @@ def evaluate_raceway_contact(
         raise KegelInputError("<argument>", "slide_to_roll", slide_to_roll, "a value in (-2, 2)")
     # the ranges of every other entry point (scene files, kegel tribology): the lubricant's
     # temperature range and formulas, the speed limit n d_m, and (below) the Hertz pressure
-    from .lubricant import lubricant_state
-    from .scene import check_speed
+    from ..model.lubricant import lubricant_state
+    from ..model.scene import check_speed
 
     lubricant_state(lubricant, temperature_K, key="temperature_K")
     check_speed(shaft_speed_rad_s, bearing, source="<argument>", key="shaft_speed_rad_s")

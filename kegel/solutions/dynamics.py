@@ -31,13 +31,13 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from . import _core
-from .data import BearingData, MaterialData
-from .errors import KegelInputError
-from .geometry import BearingGeometry
+from .. import _core
+from ..model.data import BearingData, MaterialData
+from ..base.errors import KegelInputError
+from ..model.geometry import BearingGeometry
 from .quasi_static import bearing_friction, bearing_model, load_distribution
 from .steady import SettledWindow, settled_window
-from .tribology import cage_speed_rad_s
+from ..physics.tribology import cage_speed_rad_s
 
 D = _core.dynamics
 
@@ -95,7 +95,7 @@ DAMPING_TIME_S = 2.5e-6
 
 # Cage geometry: kegel.geometry's pressed-steel window cage; the window edges touch the roller
 # on the shell's inner face.
-from .geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO  # noqa: E402
+from ..model.geometry import CAGE_OFFSET_RATIO, CAGE_OVERHANG_RATIO, CAGE_THICKNESS_RATIO  # noqa: E402
 
 
 class SimulationDiverged(RuntimeError):
@@ -455,10 +455,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         bodies start at rest).
     """
     # the limits of a dynamic scene (kegel.scene), the same for the Python API
-    from .lubricant import lubricant_state
-    from .scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, _speed_limit_text,
+    from ..model.lubricant import lubricant_state
+    from ..model.scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, _speed_limit_text,
                         max_speed_rpm, static_equivalent_load_N)
-    from .units import RPM_TO_RAD_S
+    from ..base.units import RPM_TO_RAD_S
 
     if (axial_N is None) == (axial_offset_m is None):
         raise KegelInputError("<argument>", "axial_N", axial_N, "exactly one of axial_N and axial_offset_m")
@@ -488,7 +488,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
             raise KegelInputError("<argument>", "axial_N" if not len(load_profile) else "load_profile", (fa, fr),
                                   f"loads whose ISO 76 static equivalent load stays within C0r = "
                                   f"{bearing.C0r_N / 1e3:g} kN")
-    from .scene import check_operating_point  # the scenes' ranges of the loads and the misalignment
+    from ..model.scene import check_operating_point  # the scenes' ranges of the loads and the misalignment
 
     check_operating_point(bearing, g, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
                           misalignment_rad=misalignment_rad)
@@ -735,7 +735,7 @@ class _Pace:
 
 def _save_checkpoint(path: Path, t: float, y: np.ndarray, times: list, states: list, quads: list,
                      rows: dict, key: str) -> None:
-    from .io import atomic_save
+    from ..base.io import atomic_save
 
     atomic_save(path, lambda tmp: np.savez(tmp, t=t, y=y, times=np.asarray(times), states=np.asarray(states),
                                            quads=np.asarray(quads), rows=json.dumps(rows), key=key),
@@ -778,7 +778,7 @@ def write_result(res: DynamicResult, directory: str | Path, meta: dict[str, Any]
     statistics, runtime, ``meta``: scene, fidelity, provenance), ``series.csv`` (scalars and
     interval means over time), ``roller_series.npz`` (per-roller series), a VTK time series of
     the bodies (``bodies.pvd`` + ``vtk/bodies_NNNN.vtu``, needs ``g``) and ``dynamic.png``."""
-    from .io import atomic_write_json, atomic_write_text, provenance
+    from ..base.io import atomic_write_json, atomic_write_text, provenance
 
     out = Path(directory)
     out.mkdir(parents=True, exist_ok=True)
@@ -902,7 +902,7 @@ def write_vtk_series(res: DynamicResult, g: BearingGeometry, directory: Path, ev
     xml = ['<?xml version="1.0"?>', '<VTKFile type="Collection" version="0.1">', "  <Collection>"]
     xml += [f'    <DataSet timestep="{t:.9g}" file="{f}"/>' for t, f in entries]
     xml += ["  </Collection>", "</VTKFile>", ""]
-    from .io import atomic_write_text
+    from ..base.io import atomic_write_text
     return atomic_write_text(directory / "bodies.pvd", "\n".join(xml))
 
 

@@ -41,16 +41,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TextIO
 
-from .errors import KegelInputError
-from .io import atomic_write_json, provenance
-from .units import RPM_TO_RAD_S, K_TO_DEGC_OFFSET, parse_quantity
+from ..base.errors import KegelInputError
+from ..base.io import atomic_write_json, provenance
+from ..base.units import RPM_TO_RAD_S, K_TO_DEGC_OFFSET, parse_quantity
 
 __all__ = ["AIHARA_SCATTER", "DATASET_DIR", "MEASURED_FILE", "MEASURED_MEAN", "MEASURED_WORST", "SKF_SCATTER",
            "Comparison", "MeasuredPoint", "MeasuredSeries", "measured_comparison", "measured_datasets",
            "model_comparisons", "print_report", "read_measured_series", "run_validation", "skf_comparisons"]
 
-DATASET_DIR = Path(__file__).resolve().parent / "data" / "validation"
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+DATASET_DIR = Path(__file__).resolve().parents[1] / "data" / "validation"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 #: The seed paper's Figure 5: measured total torque of the 32216 at Table 1's conditions.
 MEASURED_FILE = DATASET_DIR / "wingertszahn2023_fig5.toml"
 #: Acceptance of issue 27 against a measurement: mean |deviation| and the worst point.
@@ -279,7 +279,7 @@ def _measured_scene(series: MeasuredSeries, overrides: tuple[str, ...] = ()):
     the scene's conditions are checked against the data file's."""
     import numpy as np
 
-    from .scene import load_scene
+    from ..model.scene import load_scene
 
     path = EXAMPLES / series.scene
     if not path.is_file():
@@ -311,9 +311,9 @@ def _measured_scene(series: MeasuredSeries, overrides: tuple[str, ...] = ()):
 
 def _aihara_Nm(scene, p: dict[str, Any]) -> float:
     """Aihara's running torque (Eq. 26, 27) at one solved pure-axial point of a scene."""
-    from . import _core
-    from .correlations.aihara import aihara_running_torque, vogel_viscosity_temperature_coefficient_1_K
-    from .lubricant import lubricant_state
+    from .. import _core
+    from ..correlations.aihara import aihara_running_torque, vogel_viscosity_temperature_coefficient_1_K
+    from ..model.lubricant import lubricant_state
 
     T = p["temperature_K"]
     P = scene.lubricant.parameters
@@ -456,9 +456,9 @@ def model_comparisons(progress: bool = False, overrides: tuple[str, ...] | list[
     running-torque formula (:mod:`kegel.correlations.aihara`) where the load is purely axial.
     Information with the models' known scatter, not pass/fail targets (``kind = "model"``).
     ``overrides`` are further ``KEY=VALUE`` changes of the model (as ``kegel run --set``)."""
-    from .correlations.aihara import CITATION as AIHARA
+    from ..correlations.aihara import CITATION as AIHARA
     from .run import run_scene
-    from .scene import load_scene
+    from ..model.scene import load_scene
 
     _check_model_overrides(overrides)
     comps, runs = [], []
@@ -541,7 +541,7 @@ def _plot_measured(c: Comparison, curves: list[dict[str, Any]], path: Path) -> P
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .plots import save_figure
+    from ..outputs.plots import save_figure
 
     fig, ax = plt.subplots(figsize=(9.6, 5.0))
     temps = sorted({round(r["temperature_degC"], 6) for r in curves}, reverse=True)
@@ -585,7 +585,7 @@ def _plot(c: Comparison, path: Path) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .plots import save_figure
+    from ..outputs.plots import save_figure
 
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     ref, keg = c.reference_Nm, c.kegel_Nm

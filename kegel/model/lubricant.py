@@ -12,10 +12,10 @@ import os
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from . import _core
+from .. import _core
 from .data import LubricantData, cragoe_specific_heat_J_kgK, load_lubricant
-from .errors import KegelInputError
-from .units import parse_quantity
+from ..base.errors import KegelInputError
+from ..base.units import parse_quantity
 
 __all__ = ["LubricantState", "lubricant_state", "temperature_domain_degC"]
 

@@ -18,10 +18,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from .data import BearingData, MaterialData
-from .errors import KegelInputError
-from .geometry import BearingGeometry
+from .. import _core
+from ..model.data import BearingData, MaterialData
+from ..base.errors import KegelInputError
+from ..model.geometry import BearingGeometry
 
 C = _core.contact
 

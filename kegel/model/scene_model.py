@@ -32,11 +32,9 @@ from typing import Any
 
 import numpy as np
 
-from .errors import KegelInputError
-from .quasi_static import MAX_SLICES
-from .supply import SUPPLY_MODELS
-from .tribology import ROLLING_THERMAL_MODELS
-from .units import parse_quantity
+from ..base.errors import KegelInputError
+from ..base.units import parse_quantity
+from .options import MAX_SLICES, ROLLING_THERMAL_MODELS, SUPPLY_MODELS
 
 __all__ = [
     "BearingSpec",

@@ -22,8 +22,8 @@ import shlex
 from pathlib import Path
 from typing import Any
 
-from .correlations import hydraulic_torques
-from .lubricant import lubricant_state
+from ..correlations import hydraulic_torques
+from ..model.lubricant import lubricant_state
 from .point_warnings import Warning_, liebrecht_warning
 
 __all__ = ["case_name", "read_study_cfd", "study_csv", "study_plot", "study_rows", "STUDY_FILES"]
@@ -39,7 +39,7 @@ _SUPPLY_KEYS = ("inlet_gap_ratio_inner", "inlet_gap_ratio_outer", "rolling_force
 
 def read_study_cfd(scene: Any) -> list[tuple[Path, dict[str, Any]]]:
     """The CFD results a study's ``cfd_results`` holds (empty when it names nothing yet)."""
-    from .coupling import cfd_result_files, read_cfd_results
+    from ..coupling import cfd_result_files, read_cfd_results
 
     st = scene.study
     if st is None or "cfd" not in st.methods or not cfd_result_files(st.cfd_results):
@@ -73,8 +73,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
 
     The minimum-quantity case has no oil bath: one row, method ``none``, hydraulic loss 0.
     """
-    from .coupling import cfd_loss_at
-    from .coupling.cfd_results import BALANCE_LIMIT
+    from ..coupling import cfd_loss_at
+    from ..coupling.cfd_results import BALANCE_LIMIT
 
     st = scene.study
     g = scene.geometry
@@ -200,7 +200,7 @@ def study_plot(points: list[dict[str, Any]], meta: dict[str, Any], path: Path) -
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .io import atomic_save
+    from ..base.io import atomic_save
     from .plots import _style_x
 
     xaxis, series = _study_x_and_series(meta)

@@ -92,18 +92,18 @@ from typing import Any
 
 import numpy as np
 
-from ._toml import read_toml
+from ..base._toml import read_toml
 from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene, load_bearing, load_lubricant,
                    load_material, lubricant_from_scene)
-from .errors import KegelInputError
+from ..base.errors import KegelInputError
 from .geometry import BearingGeometry, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
-from .limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
+from ..base.limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
 from .scene_model import (ALLOWED_KEYS, AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
                           MAX_DYNAMIC_OUTPUTS, MAX_OPERATING_POINTS, MIN_OUTPUT_INTERVAL_S, OIL_LEVEL_WORDS,
                           DynamicSettings, LubricationSpec, ModelOptions, OperatingSpec, Reader, SceneSpec, StudySpec,
                           parse_scene)
-from .units import RPM_TO_RAD_S, parse_quantity
+from ..base.units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
     "HYDRAULIC_METHODS",

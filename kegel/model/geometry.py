@@ -53,7 +53,7 @@ from numpy.polynomial import Polynomial
 from scipy.optimize import brentq
 
 from .data import BearingData, MaterialData
-from .errors import KegelInputError
+from ..base.errors import KegelInputError
 
 __all__ = [
     "BearingGeometry",

@@ -13,7 +13,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any, Callable
 
-from . import _core
+from .. import _core
 
 __all__ = ["atomic_write_text", "atomic_write_json", "atomic_write_json_records", "atomic_save", "file_mode", "provenance", "RunFolder",
            "OutputLocked", "OutputRefused", "Terminated", "signals_interrupt", "staging_path", "temp_beside", "MANIFEST"]
@@ -111,7 +111,7 @@ def atomic_write_json_records(path: str | Path, header: dict[str, Any], key: str
 
 def provenance() -> dict[str, str]:
     """Versions and host facts written next to every result."""
-    from . import __version__
+    from .version import __version__
 
     return {
         "kegel_version": __version__,
