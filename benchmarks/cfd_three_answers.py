@@ -1,7 +1,7 @@
 """The three answers with the real rollers: flooded 32208, FVA 3 at 50 degC, Fa = 1 kN, over speed.
 
 For each speed: contact + CFD (the contact's rolling force cut off where the film reaches the
-gap g that the CFD opens, :func:`kegel.supply.contact_loss_at_film_limit`, plus the CFD loss of a
+gap g that the CFD opens, :func:`kegel.runner.film_limit.contact_loss_at_film_limit`, plus the CFD loss of a
 flooded one-pitch sector at g with ``--cells`` cells across each gap, plus the analytic
 thin-film terms of the films thinner than the CFD's clearance), contact + Liebrecht and
 contact + SKF drag (the uncut flooded contact, the correlation's whole hydraulic loss). The CFD
@@ -60,7 +60,7 @@ def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int, m
 def correlations_and_contact(speed_rpm: float, gap_m: float) -> dict:
     """Contact friction cut at g and uncut, and Liebrecht's and SKF's flooded hydraulic losses."""
     import kegel
-    from kegel.supply import contact_loss_at_film_limit
+    from kegel.runner.film_limit import contact_loss_at_film_limit
 
     kw = dict(bearing="32208", speed=f"{speed_rpm:g} rpm", axial_load=f"{AXIAL_LOAD_N:g} N",
               temperature=f"{TEMPERATURE_K - 273.15:g} degC", oil_level="flooded")
