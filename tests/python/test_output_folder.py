@@ -89,8 +89,10 @@ def test_the_previous_results_survive_ctrl_c(tmp_path):
     before = _snapshot(out)
     exe = Path(sys.executable).with_name("kegel")
     # one process: its points reach the stream one by one (parallel chains of 16 reach it whole)
-    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--jobs", "1"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+    # the fine level, about 0.7 s a point: since the quasi-static speed-up a default point takes
+    # 0.13 s, and a signal after the second point found the run finished
+    proc = subprocess.Popen([str(exe), "run", TABLE3, "--set", 'model.fidelity="fine"', "--output", str(out),
+                             "--jobs", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     t0 = time.monotonic()
     while _stream_points(tmp_path) < 2 and proc.poll() is None and time.monotonic() - t0 < 120:
         time.sleep(0.05)
@@ -298,8 +300,10 @@ def test_sigterm_during_a_sweep_exits_143_and_the_rerun_resumes(tmp_path):
     out = tmp_path / "out"
     exe = Path(sys.executable).with_name("kegel")
     # one process: its points reach the stream one by one (parallel chains of 16 reach it whole)
-    proc = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--jobs", "1"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+    # the fine level, about 0.7 s a point: since the quasi-static speed-up a default point takes
+    # 0.13 s, and a signal after the second point found the run finished
+    proc = subprocess.Popen([str(exe), "run", TABLE3, "--set", 'model.fidelity="fine"', "--output", str(out),
+                             "--jobs", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     t0 = time.monotonic()
     while _stream_points(tmp_path) < 2 and proc.poll() is None and time.monotonic() - t0 < 120:
         time.sleep(0.05)
@@ -307,7 +311,7 @@ def test_sigterm_during_a_sweep_exits_143_and_the_rerun_resumes(tmp_path):
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == 143 and "kept in" in err, err
     kept = _stream_points(tmp_path)
-    res = run_kegel("run", TABLE3, "--output", str(out))
+    res = run_kegel("run", TABLE3, "--set", 'model.fidelity="fine"', "--output", str(out))
     assert res.returncode == 0 and f"{kept} of 15" in res.stderr, res.stderr
 
 

@@ -362,7 +362,7 @@ def test_two_live_runs_never_share_a_folder(tmp_path):
     out = tmp_path / "run"
     exe = Path(sys.executable).with_name("kegel")
     # one process: its points reach the stream one by one (a parallel chain of 16 reaches it whole)
-    first = subprocess.Popen([str(exe), "run", TABLE3, "--output", str(out), "--format", "json", "--jobs", "1"],
+    first = subprocess.Popen([str(exe), "run", TABLE3, "--set", 'model.fidelity="fine"', "--output", str(out), "--format", "json", "--jobs", "1"],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         t0 = time.monotonic()
@@ -379,7 +379,7 @@ def test_two_live_runs_never_share_a_folder(tmp_path):
             first.kill()
             first.wait()
     assert first.returncode == 130
-    res = run_kegel("run", TABLE3, "--output", str(out))
+    res = run_kegel("run", TABLE3, "--set", 'model.fidelity="fine"', "--output", str(out))
     assert res.returncode == 0 and "resuming the run" in res.stderr, res.stderr
     assert len(json.loads((out / "results.json").read_text())["points"]) == 15
 

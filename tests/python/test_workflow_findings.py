@@ -69,9 +69,12 @@ def test_finding1_the_study_example_runs_in_one_command(tmp_path):
                     float(r["friction_torque_Nm"]) + float(r["hydraulic_torque_Nm"]), rel=1e-12)
     assert float(by[(2000, "minimum_quantity", "none")]["hydraulic_torque_Nm"]) == 0.0
     assert (tmp_path / "out" / "study.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    # the README's "three answers" table (mN m) is what this study gives for the same points
+    # docs/cfd.md's table of the old geometry's three answers (mN m; the study's stored CFD results
+    # are still those) is what this study gives for the same points
+    cfd_md = (REPO / "docs" / "cfd.md").read_text()
+    old_section = cfd_md.split("### The old geometry", 1)[1].split("\n## ", 1)[0]
     table = {}
-    for line in README.read_text().splitlines():
+    for line in old_section.splitlines():
         m = re.match(r"\| (\d+) \|((?: [^|]+ \|){6})$", line)
         if m:
             cells = [float(re.match(r"[\d.]+", c.strip()).group()) for c in m.group(2).split("|")[:-1]]
@@ -81,6 +84,23 @@ def test_finding1_the_study_example_runs_in_one_command(tmp_path):
         ours = [float(by[(n, lub, m)]["hydraulic_torque_Nm"]) * 1e3
                 for lub in ("flooded", "shaft_center") for m in ("liebrecht", "skf", "cfd")]
         assert ours == pytest.approx(cells, rel=0.01, abs=0.06), n
+
+
+def test_the_readme_three_answers_are_the_stored_study():
+    """The README's three-answers table (real rollers, totals in mN m) is what
+    benchmarks/results/cfd_three_answers.json holds, cell by cell."""
+    rows = {round(r["speed_rpm"]): r for r in
+            json.loads((REPO / "benchmarks" / "results" / "cfd_three_answers.json").read_text())["rows"]}
+    keys = ("contact_cut_at_g_Nm", "cfd_loss_Nm", "thin_films_Nm", "contact_plus_cfd_plus_thin_films_Nm",
+            "contact_uncut_Nm", "liebrecht_Nm", "contact_plus_liebrecht_Nm", "skf_drag_Nm", "contact_plus_skf_Nm")
+    table = {}
+    for line in README.read_text().splitlines():
+        m = re.match(r"\| (\d+) \|((?: [^|]+ \|){9})$", line)
+        if m:
+            table[int(m.group(1))] = [float(c.strip().strip("*")) for c in m.group(2).split("|")[:-1]]
+    assert sorted(table) == sorted(rows) == [500, 1000, 2000, 4000]
+    for n, cells in table.items():
+        assert [1e3 * rows[n][k] for k in keys] == pytest.approx(cells, abs=0.051), n
 
 
 def test_finding1_plot_labels_follow_set(tmp_path):
