@@ -180,7 +180,8 @@ class Bearing:
              speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
              temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
              radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
-             axial_offset_um: Any = None) -> "SceneSpec":
+             axial_offset_um: Any = None, inner_ring_temperature: Any = None,
+             outer_ring_temperature: Any = None) -> "SceneSpec":
         """The typed scene model (:class:`kegel.scene_model.SceneSpec`) that :meth:`friction`
         validates and solves; the arguments are those of :meth:`friction`. Each quantity is read
         once, by the grammar of :mod:`kegel.units`; a scene file with the same values gives an
@@ -196,6 +197,8 @@ class Bearing:
 
         given = {k: v for k, v in locals().items() if k in _QUANTITIES or k in UNIT_KEYWORDS}
         operating, texts = _operating_spec(given)
+        operating, texts = _with_ring_temperatures(operating, texts, {"inner_ring_temperature": inner_ring_temperature,
+                                                                      "outer_ring_temperature": outer_ring_temperature})
         lub = _lubrication_spec(lubrication)
         method = _hydraulic_method(hydraulic, lub.mode)
         model_table: dict[str, Any] = {"fidelity": self.fidelity}
@@ -219,7 +222,8 @@ class Bearing:
               speed_rpm: Any = None, speed_rad_s: Any = None, temperature_degC: Any = None,
               temperature_K: Any = None, axial_load_N: Any = None, axial_load_kN: Any = None,
               radial_load_N: Any = None, radial_load_kN: Any = None, axial_offset_m: Any = None,
-              axial_offset_um: Any = None) -> dict[str, Any]:
+              axial_offset_um: Any = None, inner_ring_temperature: Any = None,
+              outer_ring_temperature: Any = None) -> dict[str, Any]:
         """The scene dictionary (the content of a scene file, see :mod:`kegel.scene`) of
         :meth:`spec`: written as a scene file, it loads into an equal typed model.
 
@@ -240,6 +244,7 @@ class Bearing:
                  temperature_degC: Any = None, temperature_K: Any = None, axial_load_N: Any = None,
                  axial_load_kN: Any = None, radial_load_N: Any = None, radial_load_kN: Any = None,
                  axial_offset_m: Any = None, axial_offset_um: Any = None,
+                 inner_ring_temperature: Any = None, outer_ring_temperature: Any = None,
                  uncertainty: Any = False) -> "FrictionResult":
         """Friction torque (and hydraulic loss) at one operating point or a sweep.
 
@@ -256,6 +261,12 @@ class Bearing:
             the axial offset is given.
         temperature, temperature_degC, temperature_K
             Oil and bearing temperature, e.g. ``"50 degC"`` (the default).
+        inner_ring_temperature, outer_ring_temperature
+            Contact temperature per ring, e.g. ``inner_ring_temperature="60 degC"`` (a string with
+            its unit or a pint quantity; one value, not swept): the inner ring's raceway and rib
+            contacts, or the outer raceway's, take the oil's properties at this temperature; the
+            hydraulic loss keeps ``temperature``. Default: ``temperature`` (every point reports
+            the temperatures it used, ``points[i]["inner_ring_temperature_degC"]``).
         radial_load, radial_load_N, radial_load_kN
             Radial load, e.g. ``"2 kN"`` (default 0).
         axial_offset, axial_offset_m, axial_offset_um
@@ -583,6 +594,33 @@ def _operating_spec(given: dict[str, Any]) -> tuple["OperatingSpec", dict[str, A
     order = ("speed", "axial_load", "axial_offset", "radial_load", "temperature")
     spec = OperatingSpec(**sweeps, given=tuple(f"operating.{k}" for k in order if k in sweeps))
     return spec, {k: texts[k] for k in order if k in texts}
+
+
+def _with_ring_temperatures(operating: "OperatingSpec", texts: dict[str, Any],
+                            given: dict[str, Any]) -> tuple["OperatingSpec", dict[str, Any]]:
+    """The typed operating table with the contact temperature per ring (``operating.inner_ring_temperature``,
+    ``outer_ring_temperature``): one temperature with its unit each, or None (the oil's)."""
+    from .model.scene_model import Scalar
+
+    extra: dict[str, Any] = {}
+    for key, value in given.items():
+        if value is None:
+            continue
+        if isinstance(value, (list, tuple, np.ndarray)):
+            raise KegelInputError(_SOURCE_FRICTION, key, value, "one temperature with its unit, e.g. '60 degC' (a "
+                                  "contact temperature per ring is not swept; sweep temperature)")
+        if isinstance(value, str) or _is_pint_quantity(value):
+            si = parse_quantity(value, "temperature", source=_SOURCE_FRICTION, key=key)
+        else:
+            raise KegelInputError(_SOURCE_FRICTION, key, value, "a temperature with its unit, e.g. '60 degC' (or a "
+                                  "pint quantity), or None for the oil temperature")
+        text = value if isinstance(value, str) else f"{si!r} K"
+        extra[key] = Scalar(si, key, value)
+        texts = {**texts, key: text}
+    if not extra:
+        return operating, texts
+    given_keys = operating.given + tuple(f"operating.{k}" for k in extra)
+    return dataclasses.replace(operating, **extra, given=given_keys), texts
 
 
 def _items(value: Any, name: str) -> list[Any] | None:

@@ -350,7 +350,10 @@ class PythonForceElement(ForceElement):
     def __init__(self, function: Callable) -> None: ...
 
 class DynamicModel:
-    def __init__(self, bearing: kegel._core.quasi_static.BearingModel, values: DynamicValues, friction: kegel._core.tribology.FrictionParameters, raceway: kegel._core.tribology.SurfacePair, rib: kegel._core.tribology.SurfacePair, lubricant: kegel._core.tribology.ContactLubricantState) -> None: ...
+    def __init__(self, bearing: kegel._core.quasi_static.BearingModel, values: DynamicValues, friction: kegel._core.tribology.FrictionParameters, raceway: kegel._core.tribology.SurfacePair, rib: kegel._core.tribology.SurfacePair, lubricant: kegel._core.tribology.ContactLubricantState, outer_lubricant: kegel._core.tribology.ContactLubricantState | None = None, inner_lubricant: kegel._core.tribology.ContactLubricantState | None = None) -> None:
+        """
+        lubricant: the contacts' lubricant state; outer_lubricant / inner_lubricant (default: lubricant) that of the outer ring's contacts and of the inner ring's (raceway and rib).
+        """
 
     @property
     def state_size(self) -> int: ...

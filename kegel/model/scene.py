@@ -101,8 +101,8 @@ from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperatur
 from ..base.limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
 from .scene_model import (ALLOWED_KEYS, AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
                           MAX_DYNAMIC_OUTPUTS, MAX_OPERATING_POINTS, MIN_OUTPUT_INTERVAL_S, OIL_LEVEL_WORDS,
-                          DynamicSettings, LubricationSpec, ModelOptions, OperatingSpec, Reader, SceneSpec, StudySpec,
-                          parse_scene)
+                          RING_TEMPERATURE_KEYS, DynamicSettings, LubricationSpec, ModelOptions, OperatingSpec, Reader,
+                          SceneSpec, StudySpec, parse_scene)
 from ..base.units import RPM_TO_RAD_S, parse_quantity
 
 __all__ = [
@@ -295,6 +295,21 @@ class OperatingPoint:
     axial_offset_m: float | None
     tilt_moment_Nm: float
     misalignment_rad: float
+    #: contact temperature of the inner ring's contacts (raceway and rib) and of the outer ring's
+    #: raceway [K] (``operating.inner_ring_temperature`` / ``outer_ring_temperature``); ``None``:
+    #: the oil temperature ``temperature_K`` (:attr:`inner_contact_temperature_K` resolves it)
+    inner_ring_temperature_K: float | None = None
+    outer_ring_temperature_K: float | None = None
+
+    @property
+    def inner_contact_temperature_K(self) -> float:
+        """Temperature of the inner ring's contacts (raceway and rib) [K]: the ring's, else the oil's."""
+        return self.temperature_K if self.inner_ring_temperature_K is None else self.inner_ring_temperature_K
+
+    @property
+    def outer_contact_temperature_K(self) -> float:
+        """Temperature of the outer ring's raceway contacts [K]: the ring's, else the oil's."""
+        return self.temperature_K if self.outer_ring_temperature_K is None else self.outer_ring_temperature_K
 
     @property
     def speed_rpm(self) -> float:
@@ -319,6 +334,11 @@ class OperatingPoint:
             "radial_load_N": self.radial_load_N,
             "tilt_moment_Nm": self.tilt_moment_Nm,
             "misalignment_rad": self.misalignment_rad,
+            # the contact temperatures the point used (the oil's unless a ring's was given)
+            "inner_ring_temperature_degC": self.inner_contact_temperature_K - 273.15,
+            "inner_ring_temperature_K": self.inner_contact_temperature_K,
+            "outer_ring_temperature_degC": self.outer_contact_temperature_K - 273.15,
+            "outer_ring_temperature_K": self.outer_contact_temperature_K,
         }
 
 
@@ -590,6 +610,16 @@ def _operating_points(reader: Reader, op: OperatingSpec, bearing: BearingData) -
                 raise reader.error(s.item_key(i), s.item_written(i), expected)
     values = {k: list(s.values) for k, s in sweeps.items()}
 
+    ring_T = {}
+    for key in RING_TEMPERATURE_KEYS:  # a contact temperature per ring: the temperature's range
+        sc = getattr(op, key)
+        if sc is None:
+            continue
+        expected = operating_range_error("temperature", sc.value, bearing)
+        if expected is not None:
+            raise reader.error(sc.key, sc.written, expected)
+        ring_T[key] = sc.value
+
     tilt, mis = op.tilt_moment.value, op.misalignment.value
     expected = operating_range_error("misalignment", mis, bearing)
     if expected is not None:
@@ -622,6 +652,8 @@ def _operating_points(reader: Reader, op: OperatingSpec, bearing: BearingData) -
                 axial_offset_m=d.get("axial_offset"),
                 tilt_moment_Nm=tilt,
                 misalignment_rad=mis,
+                inner_ring_temperature_K=ring_T.get("inner_ring_temperature"),
+                outer_ring_temperature_K=ring_T.get("outer_ring_temperature"),
             )
         )
     return points, swept
@@ -874,6 +906,10 @@ def validate_scene(spec: SceneSpec) -> Scene:
     for T in sorted({p.temperature_K for p in points}):
         # the oil's formulas must hold at every temperature of the scene (checked now, not in the run)
         lubricant_state(lubricant, T, source=reader.src(temperature.key), key=temperature.key)
+    for key in RING_TEMPERATURE_KEYS:  # and at each ring's contact temperature
+        sc = getattr(spec.operating, key)
+        if sc is not None:
+            lubricant_state(lubricant, sc.value, source=reader.src(sc.key), key=sc.key)
     study = _study(reader, spec.study, bearing) if spec.study is not None else None
     # a study solves the contact friction alone; its lubrications add their hydraulic losses
     if study is None:

@@ -66,7 +66,7 @@ ALLOWED_KEYS: dict[str, set[str]] = {
     "lubricant": {"name", "nu40_mm2_s", "iso_vg", "nu100_mm2_s", "density_15C_kg_m3", "description"},
     "operating": {
         "axial_load", "axial_offset", "radial_load", "tilt_moment", "misalignment", "speed",
-        "temperature",
+        "temperature", "inner_ring_temperature", "outer_ring_temperature",
     },
     "lubrication": {"mode", "oil_level"},
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
@@ -92,6 +92,9 @@ MODEL_CHOICES: dict[str, tuple[str, ...]] = {
     "lubricant_supply": SUPPLY_MODELS,
 }
 AUTO_TOLERANCE = 0.01
+#: ``[operating]`` keys of the contact temperature per ring (issue 27, item 6): optional, one value
+#: each; absent, the ring's contacts run at the oil temperature (``temperature``)
+RING_TEMPERATURE_KEYS = ("inner_ring_temperature", "outer_ring_temperature")
 #: operating quantity -> kind of quantity (kegel.units)
 OPERATING_KINDS = {"axial_load": "force", "axial_offset": "length", "radial_load": "force",
                    "speed": "speed", "temperature": "temperature"}
@@ -195,7 +198,10 @@ class LubricantSpec:
 class OperatingSpec:
     """The ``[operating]`` table in SI units: exactly one of ``axial_load`` [N] and
     ``axial_offset`` [m]; ``radial_load`` [N] (default 0), ``speed`` [rad/s], ``temperature``
-    [K]; ``tilt_moment`` [N m] and ``misalignment`` [rad] (default 0)."""
+    [K]; ``tilt_moment`` [N m] and ``misalignment`` [rad] (default 0); ``inner_ring_temperature``
+    and ``outer_ring_temperature`` [K]: the contact temperature of each ring's contacts (the inner
+    ring's raceway and rib, the outer ring's raceway), one value each (not swept); ``None``: the
+    oil temperature of the point."""
 
     speed: Sweep
     temperature: Sweep
@@ -204,6 +210,8 @@ class OperatingSpec:
     radial_load: Sweep = Sweep((0.0,), "operating.radial_load", "0 kN")
     tilt_moment: Scalar = Scalar(0.0, "operating.tilt_moment", "0 N m")
     misalignment: Scalar = Scalar(0.0, "operating.misalignment", "0 rad")
+    inner_ring_temperature: Scalar | None = None
+    outer_ring_temperature: Scalar | None = None
     #: the dotted keys given (the others are defaults)
     given: tuple[str, ...] = field(default=(), compare=False)
 
@@ -435,6 +443,12 @@ def parse_operating(reader: Reader, op: dict[str, Any]) -> OperatingSpec:
     for key, kind in (("tilt_moment", "moment"), ("misalignment", "angle")):
         if key in op:
             kw[key] = Scalar(reader.quantity(op[key], kind, f"operating.{key}"), f"operating.{key}", op[key])
+    for key in RING_TEMPERATURE_KEYS:  # one value each (a contact temperature per ring), not swept
+        if key in op:
+            if isinstance(op[key], (list, dict)):
+                raise reader.error(f"operating.{key}", op[key], "one temperature with its unit, e.g. '60 degC' (a "
+                                   "contact temperature per ring is not swept; sweep operating.temperature)")
+            kw[key] = Scalar(reader.quantity(op[key], "temperature", f"operating.{key}"), f"operating.{key}", op[key])
     return OperatingSpec(**kw, given=tuple(f"operating.{k}" for k in op))
 
 

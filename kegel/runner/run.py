@@ -629,7 +629,8 @@ def _quasi_static_point(scene: Scene, fid: "Fidelity", op, friction, *, model=No
         inner_speed_rad_s=op.speed_rad_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
         radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, tilt_moment_Nm=op.tilt_moment_Nm,
         slices=fid.slices, method=fid.slice_model,
-        rib_cells=_rib_cells(fid), cage=fid.cage, model=model, data=data)
+        rib_cells=_rib_cells(fid), cage=fid.cage, model=model, data=data,
+        inner_ring_temperature_K=op.inner_ring_temperature_K, outer_ring_temperature_K=op.outer_ring_temperature_K)
 
 
 def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
@@ -712,7 +713,9 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
                                               fid.as_dict(), {k: v for k, v in dyn.as_dict().items() if k != "threads"}],
                                              sort_keys=True),
                    progress=progress, elements=elements, load_profile=list(dyn.load_profile),
-                   threads=dyn.threads or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
+                   threads=dyn.threads or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1),
+                   inner_ring_temperature_K=op.inner_ring_temperature_K,
+                   outer_ring_temperature_K=op.outer_ring_temperature_K)
     st = res.steady
     w = st["inner_speed_rad_s"]
     hyd = None

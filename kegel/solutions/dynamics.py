@@ -35,7 +35,7 @@ from .. import _core
 from ..model.data import BearingData, MaterialData
 from ..base.errors import KegelInputError
 from ..model.geometry import BearingGeometry
-from .quasi_static import bearing_friction, bearing_model, load_distribution
+from .quasi_static import bearing_friction, bearing_model, load_distribution, ring_lubricant_states
 from .steady import SettledWindow, settled_window
 from ..physics.tribology import cage_speed_rad_s
 
@@ -145,8 +145,13 @@ def ring_mass_properties(g: BearingGeometry, bearing: BearingData, density_kg_m3
 def dynamic_model(g: BearingGeometry, bearing: BearingData, material: MaterialData, lubricant, friction, *,
                   temperature_K: float, slices: int = 20, method: str = "independent", cage: bool = True,
                   cage_points: int = 4, damping_time_s: float | None = None, ring_mass: float | None = None,
-                  gravity_m_s2: Sequence[float] = (0.0, 0.0, 0.0)) -> tuple["D.DynamicModel", Any]:
-    """The C++ dynamic model and its quasi-static bearing model (for the initial state)."""
+                  gravity_m_s2: Sequence[float] = (0.0, 0.0, 0.0), inner_ring_temperature_K: float | None = None,
+                  outer_ring_temperature_K: float | None = None) -> tuple["D.DynamicModel", Any]:
+    """The C++ dynamic model and its quasi-static bearing model (for the initial state).
+
+    ``inner_ring_temperature_K`` / ``outer_ring_temperature_K``: the contact temperature of each
+    ring's contacts (the inner ring's raceway and rib, the outer raceway); ``None``: the oil
+    temperature (:func:`kegel.quasi_static.ring_lubricant_states`)."""
     qs_model = bearing_model(g, bearing, material, slices=slices, method=method)
     T = _core.tribology
     E = _core.reduced_modulus_Pa(material.core, material.core)
@@ -172,7 +177,10 @@ def dynamic_model(g: BearingGeometry, bearing: BearingData, material: MaterialDa
     v.gravity_m_s2 = np.asarray(gravity_m_s2, dtype=float)
     v.cage_points = cage_points
     v.cage = cage
-    model = D.DynamicModel(qs_model, v, friction.core(lubricant), race, rib, state)
+    inner_state, outer_state = ring_lubricant_states(lubricant, temperature_K, inner_ring_temperature_K,
+                                                     outer_ring_temperature_K)
+    model = D.DynamicModel(qs_model, v, friction.core(lubricant), race, rib, state,
+                           outer_lubricant=outer_state, inner_lubricant=inner_state)
     return model, qs_model
 
 
@@ -388,7 +396,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
              tilt_moment_Nm: float = 0.0,
              max_ring_displacement_m: float = 0.5e-3, checkpoint_key: str = "", threads: int = 1,
              load_profile: Sequence[tuple[float, float, float]] = (),
-             max_duration_s: float | None = None) -> DynamicResult:
+             max_duration_s: float | None = None, inner_ring_temperature_K: float | None = None,
+             outer_ring_temperature_K: float | None = None) -> DynamicResult:
     """Run the dynamic simulation along a speed profile.
 
     Parameters
@@ -397,6 +406,10 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         (time_s, inner-ring speed in rad/s) points; linear in between, constant after the last.
     duration_s
         Simulated time (at least; see ``max_duration_s``).
+    inner_ring_temperature_K, outer_ring_temperature_K
+        Contact temperature of the inner ring's contacts (raceway and rib) and of the outer
+        raceway's [K]; ``None`` (default): ``temperature_K``. The hydraulic losses keep the oil
+        temperature.
     max_duration_s
         Automatic duration: a run whose torques and cage speed have not settled (:func:`settling`)
         by ``duration_s`` goes on, a quarter of ``duration_s`` at a time, until they settle or the
@@ -504,7 +517,9 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         radial_N = float(np.interp(0.0, loads[:, 0], loads[:, 2]))
     wall0 = time.perf_counter()
     model, qs_model = dynamic_model(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
-                                    slices=slices, method=method, cage=cage, damping_time_s=damping_time_s)
+                                    slices=slices, method=method, cage=cage, damping_time_s=damping_time_s,
+                                    inner_ring_temperature_K=inner_ring_temperature_K,
+                                    outer_ring_temperature_K=outer_ring_temperature_K)
     # initial state from the quasi-static solution at the start speed; where that has no
     # solution (a light load at high speed: the centrifugal force lifts the rollers off the
     # inner ring, which is the skidding case), from the load distribution at rest, turning at
@@ -518,7 +533,8 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
             _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
                                      inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,
                                      radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model,
-                                     data=qs_data, cage=cage)
+                                     data=qs_data, cage=cage, inner_ring_temperature_K=inner_ring_temperature_K,
+                                     outer_ring_temperature_K=outer_ring_temperature_K)
             if not fr.converged:
                 raise RuntimeError("the quasi-static kinematics did not converge")
             wc, spins = fr.cage_speed_rad_s, list(fr.roller_spin_rad_s)

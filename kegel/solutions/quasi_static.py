@@ -28,7 +28,7 @@ from ..physics.tribology import cage_speed_rad_s as pure_rolling_cage_speed
 Q = _core.quasi_static
 
 __all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "MAX_SLICES", "bearing_friction", "bearing_model",
-           "load_distribution", "plausibility_failures"]
+           "load_distribution", "plausibility_failures", "ring_lubricant_states"]
 
 
 from ..model.options import MAX_SLICES  # noqa: E402  (the scene's limit too: kegel.model.options)
@@ -245,7 +245,8 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                      tilt_moment_Nm: float = 0.0,
                      slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0,
                      cage: bool | str = True,
-                     model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None
+                     model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None,
+                     inner_ring_temperature_K: float | None = None, outer_ring_temperature_K: float | None = None
                      ) -> tuple[LoadDistribution, BearingFrictionResult]:
     """Load distribution and friction of the whole bearing at one operating point.
 
@@ -255,6 +256,12 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         :class:`kegel.LubricantData` and :class:`kegel.FrictionData`.
     temperature_K, inner_speed_rad_s
         Oil temperature and inner-ring speed (outer ring fixed).
+    inner_ring_temperature_K, outer_ring_temperature_K
+        Contact temperature per ring (issue 27, item 6): the inner ring's raceway and rib contacts
+        are evaluated with the lubricant's state at ``inner_ring_temperature_K`` (viscosity,
+        pressure-viscosity coefficient, thermal conductivity, Eq. 7-8 and 15 of the seed paper),
+        the outer raceway's at ``outer_ring_temperature_K``. ``None`` (default): the oil
+        temperature, bit-identical to one state for all contacts.
     rib_cells
         0: the rib as one closed-form elliptic contact; n > 0: its pressure field by the cell
         model (n x n) with every cell's friction at its own sliding velocity.
@@ -301,6 +308,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                           speed_rad_s=inner_speed_rad_s, axial_N=axial_N, axial_offset_m=axial_offset_m,
                           radial_N=radial_N, tilt_moment_Nm=tilt_moment_Nm, misalignment_rad=misalignment_rad,
                           names={"speed": "inner_speed_rad_s"})
+    ring_states = ring_lubricant_states(lubricant, temperature_K, inner_ring_temperature_K, outer_ring_temperature_K)
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     warm = data is not None
     data = data or Q.BearingData(model)
@@ -327,7 +335,8 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
 
     def evaluate(mode: str, data) -> dict:
         return Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant),
-                                           race, rib, rib_cells, getattr(Q.CageModel, mode))
+                                           race, rib, rib_cells, getattr(Q.CageModel, mode),
+                                           outer_lubricant_state=ring_states[1], inner_lubricant_state=ring_states[0])
 
     def solve(data) -> tuple[str, dict]:
         f = evaluate(mode, data)
@@ -399,6 +408,40 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         start=start,
     )
     return dist, res
+
+
+def ring_lubricant_states(lubricant, temperature_K: float, inner_ring_temperature_K: float | None,
+                          outer_ring_temperature_K: float | None, *, source: str = "<argument>",
+                          names: tuple[str, str] = ("inner_ring_temperature_K", "outer_ring_temperature_K")
+                          ) -> tuple[Any, Any]:
+    """The contact lubricant states of the inner ring's contacts (raceway and rib) and of the
+    outer ring's raceway (``kegel._core.tribology.ContactLubricantState``), each at its ring's
+    temperature; ``None`` for a ring without its own temperature (the contacts then take the
+    oil's state at ``temperature_K``, passed separately).
+
+    Raises
+    ------
+    KegelInputError
+        A ring temperature that is not a finite number in kegel's temperature range or outside
+        the domain of the lubricant's formulas, naming ``names`` (inner, outer).
+    """
+    from ..model.lubricant import lubricant_state
+    from ..model.scene import operating_range_error
+
+    out = []
+    for value, name in zip((inner_ring_temperature_K, outer_ring_temperature_K), names):
+        if value is None:
+            out.append(None)
+            continue
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
+            raise KegelInputError(source, name, value, "a temperature in K (a number) or None (the oil temperature)")
+        v = float(value)
+        expected = operating_range_error("temperature", v, None)  # the range needs no bearing
+        if expected is not None:
+            raise KegelInputError(source, name, value, expected)
+        lubricant_state(lubricant, v, source=source, key=name)  # the oil's formulas hold there
+        out.append(_core.tribology.make_contact_lubricant_state(lubricant.core, v))
+    return out[0], out[1]
 
 
 def _blend(a: Any, b: Any, t: float) -> Any:

@@ -174,10 +174,15 @@ void bind_dynamics(nb::module_& parent) {
       .def(
           "__init__",
           [](DynamicModel* self, std::shared_ptr<BearingModel> b, const V& v, const FrictionParameters& f,
-             const SurfacePair& race, const SurfacePair& rib, const ContactLubricantState& lub) {
-            new (self) DynamicModel(std::move(b), v, f, race, rib, lub);
+             const SurfacePair& race, const SurfacePair& rib, const ContactLubricantState& lub,
+             const ContactLubricantState* outer_lub, const ContactLubricantState* inner_lub) {
+            new (self) DynamicModel(std::move(b), v, f, race, rib, outer_lub ? *outer_lub : lub,
+                                    inner_lub ? *inner_lub : lub);
           },
-          "bearing"_a, "values"_a, "friction"_a, "raceway"_a, "rib"_a, "lubricant"_a)
+          "bearing"_a, "values"_a, "friction"_a, "raceway"_a, "rib"_a, "lubricant"_a,
+          "outer_lubricant"_a.none() = nb::none(), "inner_lubricant"_a.none() = nb::none(),
+          "lubricant: the contacts' lubricant state; outer_lubricant / inner_lubricant (default: lubricant) "
+          "that of the outer ring's contacts and of the inner ring's (raceway and rib).")
       .def_prop_ro("state_size", &DynamicModel::state_size)
       .def_prop_ro("roller_count", &DynamicModel::roller_count)
       .def_prop_ro("cage_offset", &DynamicModel::cage_offset)

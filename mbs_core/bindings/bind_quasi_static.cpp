@@ -91,10 +91,11 @@ void bind_quasi_static(nb::module_& parent) {
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
          const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
-         const SurfacePair& rib, int rib_cells, CageModel cage) {
+         const SurfacePair& rib, int rib_cells, CageModel cage, const ContactLubricantState* outer_lub,
+         const ContactLubricantState* inner_lub) {
         BearingFriction f;
-        const int status =
-            evaluate_bearing_friction(model, data, loads, inner_speed, lub, fp, race, rib, f, rib_cells, cage);
+        const int status = evaluate_bearing_friction(model, data, loads, inner_speed, outer_lub ? *outer_lub : lub,
+                                                     inner_lub ? *inner_lub : lub, fp, race, rib, f, rib_cells, cage);
         if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
                                                     "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256");
         nb::dict d;
@@ -117,8 +118,11 @@ void bind_quasi_static(nb::module_& parent) {
         return d;
       },
       "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
-      "rib"_a, "rib_cells"_a = 0, "cage"_a = CageModel::FreeRollers,
-      "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model).");
+      "rib"_a, "rib_cells"_a = 0, "cage"_a = CageModel::FreeRollers, "outer_lubricant_state"_a.none() = nb::none(),
+      "inner_lubricant_state"_a.none() = nb::none(),
+      "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model). "
+      "outer_lubricant_state / inner_lubricant_state (default: lubricant_state): the lubricant state of the "
+      "outer ring's contacts and of the inner ring's (its raceway and the rib), for a contact temperature per ring.");
 }
 
 }  // namespace kegel::python

@@ -202,7 +202,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       SliceInput in = make_slice_input(g, q, wslice, v1, v2);
       in.outer_ring = outer;  // its raceway's inlet supply
       SliceResult s;
-      evaluate_slice(in, m.raceway(), m.lubricant(), m.slice_friction(), s);
+      evaluate_slice(in, m.raceway(), outer ? m.outer_lubricant() : m.inner_lubricant(), m.slice_friction(), s);
       const Vec3 ft = (s.F_ehl_sliding_N[0] + s.F_solid_sliding_N[0]) * g.t_roll_R +
                       (s.F_ehl_sliding_N[1] + s.F_solid_sliding_N[1]) * g.t_line_R;
       const double Q = in.load_N;
@@ -276,7 +276,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
       in.u2_x_m_s = v2.dot(troll);
       in.u2_y_m_s = v2.dot(tline);
       SliceResult s;
-      evaluate_cell(in, m.rib(), m.lubricant(), m.rib_friction(), s);
+      evaluate_cell(in, m.rib(), m.inner_lubricant(), m.rib_friction(), s);  // the rib is the inner ring's
       const double v_app = -(v1 - v2).dot(nw);
       const double Fd = tribology::damping_coefficient(-gmin, m.rib_damping_Ns_m(), m.slice_friction().values().delta_max_m) * v_app;
       const Vec3 fn = std::max(hz.load_N + Fd, 0.0) * nw;
@@ -617,13 +617,20 @@ const DynamicValues& validated(const DynamicValues& v) {
 DynamicModel::DynamicModel(std::shared_ptr<const BearingModel> bearing, const DynamicValues& values,
                            const FrictionParameters& friction, const SurfacePair& raceway, const SurfacePair& rib,
                            const ContactLubricantState& lubricant)
+    : DynamicModel(std::move(bearing), values, friction, raceway, rib, lubricant, lubricant) {}
+
+DynamicModel::DynamicModel(std::shared_ptr<const BearingModel> bearing, const DynamicValues& values,
+                           const FrictionParameters& friction, const SurfacePair& raceway, const SurfacePair& rib,
+                           const ContactLubricantState& outer_lubricant,
+                           const ContactLubricantState& inner_lubricant)
     : bearing_(std::move(bearing)),
       v_(validated(values)),
       fp_slice_(friction),
       fp_rib_(friction),
       race_(raceway),
       rib_(rib),
-      lub_(lubricant) {
+      lub_outer_(outer_lubricant),
+      lub_inner_(inner_lubricant) {
   if (!bearing_) throw std::invalid_argument("DynamicModel: bearing model is null");
   const auto& bv = bearing_->values();
   if (v_.cage_edge_height_m >= bv.roller_mean_radius_m - bv.roller_length_m * std::tan(bv.roller_half_angle_rad))

@@ -42,9 +42,11 @@ struct Eval {
   double Lmin[3] = {1e300, 1e300, 1e300}, phimax[3] = {0, 0, 0};
 };
 
-Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubricantState& lub,
-          const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& rib, bool accumulate,
-          bool cage) {
+// lub_o / lub_i: the lubricant state of the outer ring's contacts and of the inner ring's (its
+// raceway and its rib).
+Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubricantState& lub_o,
+          const ContactLubricantState& lub_i, const FrictionParameters& fp, const SurfacePair& race,
+          const SurfacePair& rib, bool accumulate, bool cage) {
   Eval e;
   double tangential = 0.0;  // circumferential load of the contacts on the roller
   const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
@@ -65,7 +67,7 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
       in.u1_y_m_s = u1.dot(c.t_line);
       in.u2_x_m_s = u2.dot(c.t_roll);
       in.u2_y_m_s = u2.dot(c.t_line);
-      evaluate_cell(in, rib, lub, fp, s);
+      evaluate_cell(in, rib, lub_i, fp, s);  // the rib is the inner ring's
     } else {
       SliceInput in;
       in.load_N = c.load_N;
@@ -76,7 +78,7 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
       in.u2_x_m_s = u2.dot(c.t_roll);
       in.u2_y_m_s = u2.dot(c.t_line);
       in.outer_ring = c.contact == BearingFriction::kOuter;  // its raceway's inlet supply
-      evaluate_slice(in, race, lub, fp, s);
+      evaluate_slice(in, race, in.outer_ring ? lub_o : lub_i, fp, s);
     }
     // tangential force on the roller: sliding (Eq. 36)
     const Eigen::Vector3d f = (s.F_ehl_sliding_N[0] + s.F_solid_sliding_N[0]) * c.t_roll +
@@ -205,6 +207,13 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
                               const ContactLubricantState& lub, const FrictionParameters& fp,
                               const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
                               int rib_cells, CageModel cage_model) noexcept {
+  return evaluate_bearing_friction(m, d, L, w_i, lub, lub, fp, race, ribp, out, rib_cells, cage_model);
+}
+
+int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
+                              const ContactLubricantState& lub_o, const ContactLubricantState& lub_i,
+                              const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& ribp,
+                              BearingFriction& out, int rib_cells, CageModel cage_model) noexcept {
   const bool cage = cage_model == CageModel::Pocket;  // pocket forces and friction
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
   std::vector<double> rib_h0;
@@ -375,7 +384,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     const Roller& r = rollers[j];
     const double w_pure = wR0 * w_c / wc0;
     if (r.points.empty()) return w_pure;
-    auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub, fp, race, ribp, false, cage).spin_moment; };
+    auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage).spin_moment; };
     const double tol = 1e-13 * std::abs(w_pure);
     double root = w_pure;
     // warm start from the previous slip of this roller
@@ -387,7 +396,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     for (int j = 0; j < Zc; ++j) {
       spins[j] = spin_at(j, w_c);
       if (!rollers[j].points.empty())
-        tangential += weight * eval(rollers[j], spins[j], w_c, w_i, lub, fp, race, ribp, false, cage).axis_moment;
+        tangential += weight * eval(rollers[j], spins[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage).axis_moment;
     }
     for (int j = Zc; j < Z; ++j) spins[j] = spins[0];
     return tangential;
@@ -434,12 +443,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
             Sw[j] = 1.0;
             continue;
           }
-          const Eval e0 = eval(r, spins[j], w_c, w_i, lub, fp, race, ribp, false, cage);
+          const Eval e0 = eval(r, spins[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage);
           S[j] = e0.spin_moment;
           A[j] = weight * e0.axis_moment;
           if (fresh) {
-            const Eval e1 = eval(r, spins[j] + hw, w_c, w_i, lub, fp, race, ribp, false, cage);
-            const Eval e2 = eval(r, spins[j], w_c + hc, w_i, lub, fp, race, ribp, false, cage);
+            const Eval e1 = eval(r, spins[j] + hw, w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage);
+            const Eval e2 = eval(r, spins[j], w_c + hc, w_i, lub_o, lub_i, fp, race, ribp, false, cage);
             Sw[j] = (e1.spin_moment - S[j]) / hw;
             Sc[j] = (e2.spin_moment - S[j]) / hc;
             Aw[j] = weight * (e1.axis_moment - e0.axis_moment) / hw;
@@ -512,12 +521,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       // a step with them halves the correction; else they are taken afresh at the iterate.
       double* J = &d.free_jacobian_[4 * size_t(j)];
       auto newton = [&](double& wo, double& wr) {
-        Eval e0 = eval(r, wr, wo, w_i, lub, fp, race, ribp, false, false);
+        Eval e0 = eval(r, wr, wo, w_i, lub_o, lub_i, fp, race, ribp, false, false);
         for (int it = 0; it < 40; ++it) {
           bool fresh = false;
           if (!std::isfinite(J[0])) {
-            const Eval e1 = eval(r, wr + hr, wo, w_i, lub, fp, race, ribp, false, false);
-            const Eval e2 = eval(r, wr, wo + ho, w_i, lub, fp, race, ribp, false, false);
+            const Eval e1 = eval(r, wr + hr, wo, w_i, lub_o, lub_i, fp, race, ribp, false, false);
+            const Eval e2 = eval(r, wr, wo + ho, w_i, lub_o, lub_i, fp, race, ribp, false, false);
             J[0] = (e1.spin_moment - e0.spin_moment) / hr;
             J[1] = (e2.spin_moment - e0.spin_moment) / ho;
             J[2] = (e1.axis_moment - e0.axis_moment) / hr;
@@ -558,7 +567,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
           for (int b = 0; b < (fresh ? 12 : 1) && !accepted; ++b, lam *= 0.5) {
             const double wr_t = wr + lam * dr, wo_t = wo + lam * dO;
             if (!std::isfinite(wr_t) || !std::isfinite(wo_t) || std::abs(wo_t - wc0) > 0.5 * std::abs(wc0)) continue;
-            const Eval et = eval(r, wr_t, wo_t, w_i, lub, fp, race, ribp, false, false);
+            const Eval et = eval(r, wr_t, wo_t, w_i, lub_o, lub_i, fp, race, ribp, false, false);
             double cr, co;
             const double mt = correction(et, cr, co);
             if (std::isfinite(mt) && mt <= (fresh ? 1.0 - 0.25 * lam : 0.5) * m0) {
@@ -652,7 +661,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     out.phi_max[k] = 0.0;
   }
   for (int j = 0; j < Zc; ++j) {
-    const Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub, fp, race, ribp, true, cage);
+    const Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage);
     out.cage_power_W += weight * ev.pocket_W;
     t_in += weight * ev.torque_inner;
     t_out += weight * ev.torque_outer;

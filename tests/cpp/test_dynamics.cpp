@@ -202,3 +202,66 @@ TEST(Dynamics, TheRightHandSideDoesNotAllocate) {
   for (int i = 0; i < 50; ++i) kegel::dynamic_rhs(*f.model, data, f.drive, 1e-6 * i, f.y0.data(), ydot.data());
   EXPECT_EQ(kegel_test_allocation_count() - before, 0);
 }
+
+// A contact temperature per ring (issue 27, item 6): the outer raceway's contacts take the outer
+// ring's lubricant state, the inner raceway's and the rib's the inner ring's.
+TEST(RingTemperature, TwoEqualStatesGiveTheDynamicRightHandSideBitForBit) {
+  Fixture f;
+  auto two = std::make_shared<kegel::DynamicModel>(f.bearing, values_32216(), f.fp, f.race, f.rib, f.state, f.state);
+  const int N = f.model->state_size();
+  kegel::DynamicData d1(*f.model), d2(*two);
+  std::vector<double> a(N), b(N);
+  kegel::DynamicOutputs o1, o2;
+  ASSERT_EQ(kegel::dynamic_rhs(*f.model, d1, f.drive, 0.0, f.y0.data(), a.data(), &o1), 0);
+  ASSERT_EQ(kegel::dynamic_rhs(*two, d2, f.drive, 0.0, f.y0.data(), b.data(), &o2), 0);
+  for (int i = 0; i < N; ++i) EXPECT_EQ(a[i], b[i]) << "component " << i;
+  EXPECT_EQ(o1.drive_torque_Nm, o2.drive_torque_Nm);
+}
+
+TEST(RingTemperature, AWarmerInnerRingThinsOnlyTheInnerRingsFilmsInTheDynamicModel) {
+  Fixture f;
+  // inner ring 10 K above the oil (50 degC), outer ring at the oil's temperature
+  const kegel::ContactLubricantState warm = kegel::make_contact_lubricant_state(f.lub, 333.15);
+  auto model = std::make_shared<kegel::DynamicModel>(f.bearing, values_32216(), f.fp, f.race, f.rib, f.state, warm);
+  const int N = f.model->state_size();
+  kegel::DynamicData d1(*f.model), d2(*model);
+  std::vector<double> a(N), b(N);
+  kegel::DynamicOutputs o1, o2;
+  ASSERT_EQ(kegel::dynamic_rhs(*f.model, d1, f.drive, 0.0, f.y0.data(), a.data(), &o1), 0);
+  ASSERT_EQ(kegel::dynamic_rhs(*model, d2, f.drive, 0.0, f.y0.data(), b.data(), &o2), 0);
+  using O = kegel::DynamicOutputs;
+  // the same state: the outer raceway's contacts are unchanged, bit for bit
+  for (int m = 0; m < 5; ++m) EXPECT_EQ(o1.power_W[O::kOuter][m], o2.power_W[O::kOuter][m]) << "mechanism " << m;
+  EXPECT_EQ(o1.Lambda_min[O::kOuter], o2.Lambda_min[O::kOuter]);
+  // the inner raceway's film is thinner (eta0 x 0.659 by Vogel, Eq. 8) and so its EHL rolling power
+  EXPECT_LT(o2.Lambda_min[O::kInner], 0.95 * o1.Lambda_min[O::kInner]);
+  EXPECT_LT(o2.power_W[O::kInner][kegel::BearingFriction::kEhlRolling],
+            0.95 * o1.power_W[O::kInner][kegel::BearingFriction::kEhlRolling]);
+}
+
+TEST(RingTemperature, QuasiStaticFrictionTakesEachRingsState) {
+  Fixture f;
+  kegel::BearingData qs(*f.bearing);
+  kegel::BearingLoads loads;
+  loads.axial_N = 6000.0;
+  ASSERT_EQ(kegel::solve_load_distribution(*f.bearing, qs, loads), 0);
+  const double w = 2000.0 * kPi / 30.0;
+  kegel::BearingFriction one, two, warm_inner;
+  ASSERT_EQ(kegel::evaluate_bearing_friction(*f.bearing, qs, loads, w, f.state, f.fp, f.race, f.rib, one), 0);
+  kegel::BearingData qs2(*f.bearing);
+  ASSERT_EQ(kegel::solve_load_distribution(*f.bearing, qs2, loads), 0);
+  ASSERT_EQ(kegel::evaluate_bearing_friction(*f.bearing, qs2, loads, w, f.state, f.state, f.fp, f.race, f.rib, two), 0);
+  EXPECT_EQ(one.drive_torque_Nm, two.drive_torque_Nm);  // two equal states: bit-identical
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(one.Lambda_min[c], two.Lambda_min[c]);
+  const kegel::ContactLubricantState warm = kegel::make_contact_lubricant_state(f.lub, 333.15);
+  kegel::BearingData qs3(*f.bearing);
+  ASSERT_EQ(kegel::solve_load_distribution(*f.bearing, qs3, loads), 0);
+  ASSERT_EQ(kegel::evaluate_bearing_friction(*f.bearing, qs3, loads, w, f.state, warm, f.fp, f.race, f.rib, warm_inner),
+            0);
+  using B = kegel::BearingFriction;
+  EXPECT_LT(warm_inner.Lambda_min[B::kInner], 0.95 * one.Lambda_min[B::kInner]);
+  EXPECT_LT(warm_inner.Lambda_min[B::kRib], one.Lambda_min[B::kRib]);  // the rib is the inner ring's
+  EXPECT_NEAR(warm_inner.Lambda_min[B::kOuter], one.Lambda_min[B::kOuter], 0.01 * one.Lambda_min[B::kOuter]);
+  EXPECT_LT(warm_inner.power_W[B::kInner][B::kEhlRolling], 0.95 * one.power_W[B::kInner][B::kEhlRolling]);
+  EXPECT_LT(warm_inner.drive_torque_Nm, one.drive_torque_Nm);
+}

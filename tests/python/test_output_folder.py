@@ -343,7 +343,8 @@ def _edit(stream: Path, change) -> None:
 
 
 OP_KEYS = ("index", "speed_rpm", "speed_rad_s", "temperature_degC", "temperature_K", "axial_load_N", "axial_offset_m",
-           "radial_load_N", "tilt_moment_Nm", "misalignment_rad")
+           "radial_load_N", "tilt_moment_Nm", "misalignment_rad", "inner_ring_temperature_degC",
+           "inner_ring_temperature_K", "outer_ring_temperature_degC", "outer_ring_temperature_K")
 
 
 @pytest.mark.parametrize("change, key", [

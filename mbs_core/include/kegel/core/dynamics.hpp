@@ -157,13 +157,23 @@ class DynamicModel {
   DynamicModel(std::shared_ptr<const BearingModel> bearing, const DynamicValues& values,
                const FrictionParameters& friction, const SurfacePair& raceway, const SurfacePair& rib,
                const ContactLubricantState& lubricant);  ///< throws std::invalid_argument
+  /// With a lubricant state per ring (issue 27, item 6): the outer raceway's contacts use
+  /// outer_lubricant, the inner raceway's and the rib's (the inner ring's) inner_lubricant.
+  /// The constructor above passes one state for both.
+  DynamicModel(std::shared_ptr<const BearingModel> bearing, const DynamicValues& values,
+               const FrictionParameters& friction, const SurfacePair& raceway, const SurfacePair& rib,
+               const ContactLubricantState& outer_lubricant,
+               const ContactLubricantState& inner_lubricant);  ///< throws std::invalid_argument
   const BearingModel& bearing() const noexcept { return *bearing_; }
   const DynamicValues& values() const noexcept { return v_; }
   const FrictionParameters& slice_friction() const noexcept { return fp_slice_; }
   const FrictionParameters& rib_friction() const noexcept { return fp_rib_; }
   const SurfacePair& raceway() const noexcept { return race_; }
   const SurfacePair& rib() const noexcept { return rib_; }
-  const ContactLubricantState& lubricant() const noexcept { return lub_; }
+  /// The lubricant state of the outer ring's contacts (its raceway).
+  const ContactLubricantState& outer_lubricant() const noexcept { return lub_outer_; }
+  /// The lubricant state of the inner ring's contacts (its raceway and the rib).
+  const ContactLubricantState& inner_lubricant() const noexcept { return lub_inner_; }
   int roller_count() const noexcept { return bearing_->values().roller_count; }
   int state_size() const noexcept { return 12 * roller_count() + 23; }
   int cage_offset() const noexcept { return 12 * roller_count(); }
@@ -184,7 +194,7 @@ class DynamicModel {
   DynamicValues v_;
   FrictionParameters fp_slice_, fp_rib_;
   SurfacePair race_, rib_;
-  ContactLubricantState lub_;
+  ContactLubricantState lub_outer_, lub_inner_;
   double d_pocket_ = 0.0, d_rib_ = 0.0;
   HertzEllipse rib_ref_;
 };

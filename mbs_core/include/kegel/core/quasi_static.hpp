@@ -162,8 +162,9 @@ class BearingData {
  private:
   friend int solve_load_distribution(const BearingModel&, BearingData&, const BearingLoads&) noexcept;
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
-                                       const ContactLubricantState&, const FrictionParameters&, const SurfacePair&,
-                                       const SurfacePair&, BearingFriction&, int, CageModel) noexcept;
+                                       const ContactLubricantState&, const ContactLubricantState&,
+                                       const FrictionParameters&, const SurfacePair&, const SurfacePair&,
+                                       BearingFriction&, int, CageModel) noexcept;
   std::vector<double> orbit_ratio_;      // FreeRollers warm start: roller orbit / pure-rolling cage speed
   std::vector<double> free_spin_ratio_;  // and its spin / pure-rolling spin (NaN: no warm start)
   std::vector<double> free_jacobian_;    // 2 x 2 derivatives of its balances, per roller (chord)
@@ -228,6 +229,16 @@ int evaluate_bearing_friction(const BearingModel& model, BearingData& data, cons
                               const FrictionParameters& friction, const SurfacePair& raceway,
                               const SurfacePair& rib, BearingFriction& out, int rib_cells = 0,
                               CageModel cage = CageModel::FreeRollers) noexcept;
+
+/// The same with a lubricant state per ring (issue 27, item 6: a contact temperature per ring):
+/// the outer raceway's contacts are evaluated with outer_lubricant, the inner raceway's and the
+/// rib's (the rib belongs to the inner ring, the cone) with inner_lubricant. The overload above
+/// passes one state for both, and gives bit-identical results to this one with two equal states.
+int evaluate_bearing_friction(const BearingModel& model, BearingData& data, const BearingLoads& loads,
+                              double inner_speed_rad_s, const ContactLubricantState& outer_lubricant,
+                              const ContactLubricantState& inner_lubricant, const FrictionParameters& friction,
+                              const SurfacePair& raceway, const SurfacePair& rib, BearingFriction& out,
+                              int rib_cells = 0, CageModel cage = CageModel::FreeRollers) noexcept;
 
 /// Solve the load distribution. An axisymmetric load case (no radial load, no tilt moment, no
 /// misalignment, tilt imposed) is solved for one roller and replicated: every roller then
