@@ -82,3 +82,21 @@ def write_scene(tmp_path):
         return path
 
     return make
+
+
+@pytest.fixture(autouse=True)
+def _sigint_as_python_sets_it(request):
+    """Every test starts with Python's own SIGINT handler. In the full clean-clone run the tests
+    that interrupt a live run (test_dynamic_interrupt, test_output_folder, test_run_survival,
+    test_reliability_cases) failed while they pass alone: an earlier test left SIGINT ignored in
+    the pytest process, and the kegel processes they start inherit an ignored SIGINT. The culprit
+    is not found yet; the warning names the test after which the handler was found changed."""
+    import signal
+    import warnings
+
+    h = signal.getsignal(signal.SIGINT)
+    if h is not signal.default_int_handler:
+        warnings.warn(f"SIGINT handler was {h!r} before {request.node.nodeid}: restored to Python's "
+                      f"default (an earlier test changed it)")
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
