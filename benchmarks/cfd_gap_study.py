@@ -103,6 +103,8 @@ def plot(rows: list[dict], path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from kegel.outputs.plots import save_figure
+
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for n in sorted({r["cells_across_gap"] for r in rows if r["sector"]}):
         sel = sorted((r for r in rows if r["sector"] and r["cells_across_gap"] == n), key=lambda r: r["inv_sqrt_gap"])
@@ -120,10 +122,8 @@ def plot(rows: list[dict], path: Path) -> None:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    tmp = path.with_name("." + path.name + ".tmp.png")
-    fig.savefig(tmp, dpi=110)
+    save_figure(fig, path)  # atomic, the temporary file removed on failure
     plt.close(fig)
-    tmp.replace(path)
 
 
 def main(argv: list[str] | None = None) -> int:

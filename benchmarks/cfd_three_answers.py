@@ -115,6 +115,8 @@ def plot(rows: list[dict], path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from kegel.outputs.plots import save_figure
+
     rows = sorted(rows, key=lambda r: r["speed_rpm"])
     n = [r["speed_rpm"] for r in rows]
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -130,10 +132,8 @@ def plot(rows: list[dict], path: Path) -> None:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    tmp = path.with_name("." + path.name + ".tmp.png")
-    fig.savefig(tmp, dpi=110)
+    save_figure(fig, path)  # atomic, the temporary file removed on failure
     plt.close(fig)
-    tmp.replace(path)
 
 
 def main(argv: list[str] | None = None) -> int:
