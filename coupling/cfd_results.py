@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
@@ -23,6 +24,9 @@ __all__ = ["BALANCE_LIMIT", "balance_of", "cfd_loss_at", "find_cfd_result", "cfd
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
 OIL_LEVEL_TOLERANCE_M = 1e-4
+#: The CFD geometry's default gap ratio g / D_w (``kegel.cfd_cases.geometry.GAP_RATIO``, chosen by
+#: the gap study, docs/cfd.md); stated here so that reading results does not import the mesher.
+DEFAULT_GAP_RATIO = 0.08
 
 #: Largest |angular-momentum balance| of a CFD result read as settled: (sum of the torques the
 #: walls take from the oil - the moment of the fluid's weight) / |drive torque|. In a steady
@@ -44,6 +48,72 @@ def balance_of(data: dict[str, Any]) -> float | None:
     return None if b is None or not math.isfinite(float(b)) else float(b)
 
 
+@dataclass(frozen=True)
+class CfdBoundary:
+    """Where a CFD result's oil ends and the contact model's begins, and the hydraulic loss that
+    goes with it (docs/cfd.md, "The contact / CFD split").
+
+    A result of the real-roller geometry (its ``point`` states ``gap_ratio``) opens a slab of
+    height ``g = gap_ratio * D_w`` at each raceway line contact: the contact model owns the oil
+    within g (its rolling force cut off there, ``contact_film_limit_m``), and the films thinner
+    than the CFD's clearance (roller end / rib, pocket faces) are analytic terms
+    (``thin_films_Nm``, :mod:`kegel.cfd_cases.thin_films`). A result of the old geometry (rollers
+    shrunk by 0.08 D_w, no ``gap_ratio``) has no defined boundary: ``contact_film_limit_m`` 0 (the
+    contact uncut) and no thin films, and ``geometry`` says so.
+
+    Attributes
+    ----------
+    geometry
+        ``"real rollers"`` or ``"shrunk rollers (old geometry, no contact / CFD boundary)"``.
+    gap_ratio
+        g / D_w of the result (None for the old geometry).
+    contact_film_limit_m
+        g [m]: the film height at which the contact model's rolling force is cut off (0: uncut).
+    cfd_Nm
+        The CFD's loss torque at the shaft (beyond g).
+    thin_films_Nm
+        The analytic thin-film terms (0 for the old geometry).
+    """
+
+    geometry: str
+    gap_ratio: float | None
+    contact_film_limit_m: float
+    cfd_Nm: float
+    thin_films_Nm: float
+
+    @property
+    def hydraulic_Nm(self) -> float:
+        """The hydraulic loss at the shaft that goes with a contact cut at g: CFD + thin films."""
+        return self.cfd_Nm + self.thin_films_Nm
+
+    def as_dict(self) -> dict[str, Any]:
+        return {**asdict(self), "hydraulic_Nm": self.hydraulic_Nm}
+
+
+def cfd_boundary(data: dict[str, Any], roller_mean_diameter_m: float, *, source: str = "<dict>") -> CfdBoundary:
+    """The contact / CFD boundary of one CFD result (:class:`CfdBoundary`).
+
+    Raises
+    ------
+    KegelInputError
+        A real-roller result without its thin-film loss (``thin_film_loss_Nm``), or a gap ratio
+        that is not a positive finite number.
+    """
+    pt = data.get("point") or {}
+    cfd = float(data["loss_torque_at_shaft_Nm"])
+    r = pt.get("gap_ratio")
+    if r is None:
+        return CfdBoundary("shrunk rollers (old geometry, no contact / CFD boundary)", None, 0.0, cfd, 0.0)
+    if isinstance(r, bool) or not isinstance(r, (int, float)) or not (math.isfinite(r) and r > 0):
+        raise KegelInputError(source, "point.gap_ratio", r, "a positive fraction of the roller diameter")
+    thin = data.get("thin_film_loss_Nm")
+    if isinstance(thin, bool) or not isinstance(thin, (int, float)) or not math.isfinite(thin) or thin < 0:
+        raise KegelInputError(source, "thin_film_loss_Nm", thin,
+                              "the analytic thin-film loss of a real-roller CFD result (a finite number >= 0; "
+                              "kegel cfd run writes it)")
+    return CfdBoundary("real rollers", float(r), float(r) * roller_mean_diameter_m, cfd, float(thin))
+
+
 def cfd_result_files(path: str | Path) -> list[Path]:
     """``path`` itself when it is a file, else every ``results.json`` below it (sorted)."""
     p = Path(path)
@@ -55,8 +125,10 @@ def cfd_result_files(path: str | Path) -> list[Path]:
 def _describe(point: dict[str, Any]) -> str:
     level = point.get("oil_level_m")
     lvl = "flooded" if level is None else f"oil level {1e3 * level:.1f} mm"
+    r = point.get("gap_ratio")
+    geo = ", shrunk rollers" if r is None else f", gap {r:g} D_w"
     return (f"{point.get('bearing')} {point.get('lubricant')} at {point.get('speed_rad_s', 0.0) * 30 / math.pi:.0f} rpm, "
-            f"{point.get('temperature_K', 0.0) - 273.15:.1f} degC, {lvl}")
+            f"{point.get('temperature_K', 0.0) - 273.15:.1f} degC, {lvl}{geo}")
 
 
 def read_cfd_results(path: str | Path, *, source: str = "<argument>",
@@ -109,17 +181,12 @@ def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad
     """
     if results is None:
         results = read_cfd_results(path, source=source, key=key)
-    found = []
-    for f, data in results:
-        pt = data["point"]
-        found.append(_describe(pt))
-        level = pt.get("oil_level_m")
-        if (pt.get("bearing") == bearing and pt.get("lubricant") == lubricant
-                and abs(pt.get("speed_rad_s", 0.0) / speed_rad_s - 1.0) <= SPEED_TOLERANCE
-                and abs(pt.get("temperature_K", 0.0) - temperature_K) <= TEMPERATURE_TOLERANCE_K
-                and ((level is None) == flooded)
-                and (flooded or abs(level - oil_level_m) <= OIL_LEVEL_TOLERANCE_M)):
+    # among the results of this bearing, lubricant, temperature and level, those of one geometry
+    # (the real rollers at the default gap first) and per speed the finest mesh
+    for w, f, data in _matching(results, bearing, lubricant, temperature_K, oil_level_m, flooded):
+        if abs(w / abs(speed_rad_s) - 1.0) <= SPEED_TOLERANCE:
             return data, f
+    found = [_describe(data["point"]) for _, data in results]
     want = _describe({"bearing": bearing, "lubricant": lubricant, "speed_rad_s": speed_rad_s,
                       "temperature_K": temperature_K, "oil_level_m": None if flooded else oil_level_m})
     have = "; ".join(found) if found else "no kegel cfd results"
@@ -129,9 +196,14 @@ def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad
 
 def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubricant: str, temperature_K: float,
               oil_level_m: float, flooded: bool) -> list[tuple[float, Path, dict[str, Any]]]:
-    """Results of one bearing, lubricant, temperature and oil level: per speed (0.5 %) the one on
-    the finest mesh, as (speed_rad_s, file, data) sorted by speed."""
-    by_speed: list[tuple[float, Path, dict[str, Any]]] = []
+    """Results of one bearing, lubricant, temperature and oil level and of one CFD geometry: per
+    speed (0.5 %) the one on the finest mesh, as (speed_rad_s, file, data) sorted by speed.
+
+    Results of different geometries (gap ratios, or the old shrunk rollers) are never mixed: the
+    CFD's loss depends on where the contact model stops. The geometry taken is the real rollers
+    at the default gap (``GAP_RATIO`` of :mod:`kegel.cfd_cases.geometry`) when such results exist,
+    else the real-roller gap with the most speeds, else the old geometry."""
+    groups: dict[float | None, list[tuple[Path, dict[str, Any]]]] = {}
     for f, data in results:
         pt = data["point"]
         level = pt.get("oil_level_m")
@@ -139,6 +211,20 @@ def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubrican
                 and abs(pt.get("temperature_K", 0.0) - temperature_K) <= TEMPERATURE_TOLERANCE_K
                 and (level is None) == flooded and (flooded or abs(level - oil_level_m) <= OIL_LEVEL_TOLERANCE_M)):
             continue
+        r = pt.get("gap_ratio")
+        groups.setdefault(None if r is None else round(float(r), 9), []).append((f, data))
+    if not groups:
+        return []
+    real = [r for r in groups if r is not None]
+    if DEFAULT_GAP_RATIO in groups:
+        pick: float | None = DEFAULT_GAP_RATIO
+    elif real:
+        pick = max(real, key=lambda r: (len(groups[r]), -r))
+    else:
+        pick = None
+    by_speed: list[tuple[float, Path, dict[str, Any]]] = []
+    for f, data in groups[pick]:
+        pt = data["point"]
         w = abs(float(pt.get("speed_rad_s", 0.0)))
         cells = (data.get("fidelity") or {}).get("cells") or 0
         for i, (w2, _, d2) in enumerate(by_speed):
@@ -179,12 +265,23 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
         largest |angular-momentum balance| of the results used; None when none states it),
         ``error_rel`` (the
         stated interpolation error; None when computed or unknown), ``note``, ``wall_time_s``
-        (runtime of the CFD results used), ``computed_speeds_rpm``.
+        (runtime of the CFD results used), ``computed_speeds_rpm``; the contact / CFD boundary
+        (:class:`CfdBoundary`): ``gap_ratio`` (g / D_w of the results used, None for the old
+        shrunk-roller geometry), ``thin_films_Nm`` (their analytic thin-film terms, interpolated
+        in the same way; 0 for the old geometry) and ``hydraulic_Nm`` (CFD + thin films: the
+        hydraulic loss that goes with a contact cut at g).
     """
     rows = _matching(results, bearing, lubricant, temperature_K, oil_level_m, flooded)
     w = abs(speed_rad_s)
     speeds = [r[0] for r in rows]
-    base = {"computed_speeds_rpm": [s * 30 / math.pi for s in speeds]}
+    ratio = rows[0][2]["point"].get("gap_ratio") if rows else None
+    base = {"computed_speeds_rpm": [s * 30 / math.pi for s in speeds], "gap_ratio": ratio}
+    # D_w does not matter here: only the loss parts are read
+    parts = [cfd_boundary(d, 1.0, source=str(f)) for _, f, d in rows]
+
+    def with_thin(out: dict[str, Any], thin: float | None) -> dict[str, Any]:
+        c = out["loss_torque_at_shaft_Nm"]
+        return {**out, "thin_films_Nm": thin, "hydraulic_Nm": None if c is None else c + (thin or 0.0)}
 
     def used(idx: list[int]) -> dict[str, Any]:
         ds = [rows[i][2] for i in idx]
@@ -199,13 +296,13 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
 
     for i, s in enumerate(speeds):
         if abs(w / s - 1.0) <= SPEED_TOLERANCE:
-            return {**base, "status": "computed", "loss_torque_at_shaft_Nm": loss(i), "error_rel": None,
-                    "note": "computed at this speed", **used([i])}
+            return with_thin({**base, "status": "computed", "loss_torque_at_shaft_Nm": loss(i), "error_rel": None,
+                              "note": "computed at this speed", **used([i])}, parts[i].thin_films_Nm)
     j = next((i for i in range(1, len(speeds)) if speeds[i - 1] < w < speeds[i]), None)
     if j is None:
-        return {**base, "status": "missing", "loss_torque_at_shaft_Nm": None, "error_rel": None, "files": [],
-                "meshes": [], "steady": None, "balance": None, "wall_time_s": 0.0,
-                "note": "no CFD result at this speed and none on both sides to interpolate from"}
+        return with_thin({**base, "status": "missing", "loss_torque_at_shaft_Nm": None, "error_rel": None,
+                          "files": [], "meshes": [], "steady": None, "balance": None, "wall_time_s": 0.0,
+                          "note": "no CFD result at this speed and none on both sides to interpolate from"}, None)
     value = _loglog(w, speeds[j - 1], loss(j - 1), speeds[j], loss(j))
     misses = []
     for k in (j - 1, j):
@@ -221,5 +318,7 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
         note += "; two computed speeds only: no estimate of the interpolation error"
     if len(meshes) > 1:
         note += f"; mixed mesh levels {sorted(str(m) for m in meshes)}"
-    return {**base, "status": "interpolated", "loss_torque_at_shaft_Nm": value,
-            "error_rel": max(misses) if misses else None, "note": note, **used([j - 1, j])}
+    a, b = parts[j - 1].thin_films_Nm, parts[j].thin_films_Nm
+    thin = _loglog(w, speeds[j - 1], a, speeds[j], b) if a > 0 and b > 0 else 0.0
+    return with_thin({**base, "status": "interpolated", "loss_torque_at_shaft_Nm": value,
+                      "error_rel": max(misses) if misses else None, "note": note, **used([j - 1, j])}, thin)

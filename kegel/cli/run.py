@@ -188,6 +188,12 @@ def _print_study(points: list[dict[str, Any]]) -> None:
                   *(label[m] for m in methods)), rows, max_rows=MAX_TABLE_ROWS, where="study.csv")
     print("  supply in/out: the oil supply's factor on the flooded EHL rolling force of the inner / outer raceway "
           "contacts (1: flooded; kegel.supply)")
+    cut = [r for p in points for r in p.get("study") or () if r.get("contact_film_limit_m")]
+    if cut:
+        g = cut[0]["contact_film_limit_m"]
+        print(f"  CFD with the real rollers: contact cut at the CFD's gap g = {1e3 * g:.3g} mm (its friction below "
+              "M_fric by the oil within g, in study.csv) + the CFD beyond g + the analytic thin films (in brackets; "
+              "docs/cfd.md)")
     if missing:
         print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")
         for c in missing[:5]:

@@ -116,10 +116,26 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
             else:
                 c = cfd_loss_at(cfd_runs, bearing=scene.bearing.designation, lubricant=scene.lubricant.name,
                                 speed_rad_s=w, temperature_K=T, oil_level_m=lub.oil_level_m, flooded=flooded)
-                loss = c["loss_torque_at_shaft_Nm"]
+                loss = c["hydraulic_Nm"]
                 row.update(status=c["status"], note=c["note"], error_rel=c["error_rel"], files=c["files"],
-                           meshes=c["meshes"], cfd_wall_time_s=c["wall_time_s"],
+                           meshes=c["meshes"], cfd_wall_time_s=c["wall_time_s"], gap_ratio=c["gap_ratio"],
+                           cfd_Nm=c["loss_torque_at_shaft_Nm"], thin_films_Nm=c["thin_films_Nm"],
                            hydraulic_torque_Nm=None if loss is None else math.copysign(loss, w))
+                if c["gap_ratio"] is not None and c["status"] != "missing":
+                    # real rollers: the contact owns the oil within the CFD's gap g, so this row's
+                    # contact friction is the one cut there (solved by the run), the hydraulic loss
+                    # the CFD beyond g plus the analytic thin films
+                    if case.get("friction_cut_at_g_Nm") is not None:
+                        row.update(friction_torque_Nm=float(case["friction_cut_at_g_Nm"]),
+                                   contact_film_limit_m=case.get("contact_film_limit_m"))
+                    else:
+                        warns.append(Warning_("cfd_contact_uncut", f"the CFD row of {row['lubrication']} adds the "
+                                              "CFD beyond its gap g to a contact friction that was not cut at g "
+                                              "(a dynamic study): it counts the oil within g twice"))
+                elif c["status"] != "missing":
+                    warns.append(Warning_("cfd_old_geometry", f"the CFD result(s) for {row['lubrication']} are of "
+                                          "the old geometry (rollers shrunk by 0.08 D_w): no contact / CFD boundary, "
+                                          "their level is set by that gap (docs/cfd.md)"))
                 if c["status"] == "missing":
                     row["command"] = _cfd_command(scene, point, lub)
                     warns.append(Warning_("cfd_missing", f"no CFD loss for {row['lubrication']} at "
@@ -139,7 +155,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                                           f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
                                           "read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")
-            row["total_torque_Nm"] = None if hyd is None else friction + hyd
+            row["total_torque_Nm"] = None if hyd is None else row["friction_torque_Nm"] + hyd
             row["warnings"] = [x.as_dict() for x in warns]
             rows.append(row)
     return rows
@@ -147,8 +163,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
 
 _CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
                 "lubrication", "oil_level_m", "method", "status", "friction_torque_Nm",
-                *(f"supply_{k}" for k in _SUPPLY_KEYS), "hydraulic_torque_Nm",
-                "total_torque_Nm", "error_rel", "converged", "note", "command", "warnings")
+                *(f"supply_{k}" for k in _SUPPLY_KEYS), "contact_film_limit_m", "hydraulic_torque_Nm", "cfd_Nm",
+                "thin_films_Nm", "total_torque_Nm", "error_rel", "converged", "note", "command", "warnings")
 
 
 def study_csv(points: list[dict[str, Any]]) -> str:

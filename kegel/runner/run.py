@@ -30,7 +30,7 @@ from ..solutions.dynamics import CONTACTS, MECHANISMS
 from ..base.io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
 from ..model.lubricant import lubricant_state
 from .parallel import effective_jobs, point_blocks, solve_blocks
-from ..base.errors import KegelSolverError
+from ..base.errors import KegelInputError, KegelSolverError
 from ..solutions.dynamics import SimulationDiverged
 from ..outputs.point_warnings import Warning_, WarningLog, point_warnings
 from ..solutions.quasi_static import bearing_friction, bearing_model
@@ -252,6 +252,10 @@ def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: P
         # the raceway contacts' inlet supply at this point (kegel.supply); a study's own
         # point has flooded contacts, each of its lubrications is solved with its supply
         op_friction, supply = _point_friction(scene, friction, op)
+        if cfd_runs is not None:
+            # the contact model owns the oil within the CFD's gap g: its rolling force is cut there
+            op_friction = dataclasses.replace(
+                op_friction, contact_film_limit_m=_cfd_point(scene, op, cfd_runs)[2].contact_film_limit_m)
         if fid.solution == "dynamic":
             point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
         else:
@@ -282,7 +286,7 @@ def preflight(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:
     runs = _read_cfd_runs(scene)
     if runs is not None:
         for op in scene.operating_points:
-            _cfd_result(scene, op, runs)
+            _cfd_point(scene, op, runs)
     return runs
 
 
@@ -386,7 +390,6 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False, un
     run of the same scene, fidelity and kegel version resumes from the points it finished, each
     record checked (:func:`_check_record`)."""
     from ..base.version import __version__
-    from ..base.errors import KegelInputError
     from ..base.io import OutputLocked, OutputRefused, RunFolder
 
     # the scene as written, less what does not change a result (the thread count)
@@ -434,10 +437,12 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
     hyd_torque = hyd.total_Nm if hyd else 0.0
     hyd_out = hyd.as_dict() if hyd else None
     if fid.hydraulic == "cfd":
-        # the CFD loss torque of this point (hydraulic power / shaft speed), as computed
-        cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
-        hyd_torque = cfd["loss_torque_at_shaft_Nm"]
-        hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": hyd_torque,
+        # the CFD loss torque of this point (hydraulic power / shaft speed), as computed, and the
+        # thin films the CFD leaves to analytic terms (the contact was cut at the CFD's gap)
+        cfd, cfd_file, bnd = _cfd_point(scene, op, cfd_runs)
+        hyd_torque = bnd.hydraulic_Nm
+        hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
+                   "boundary": bnd.as_dict(),
                    "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady"),
                    "angular_momentum_balance": _balance_of(cfd)}
     w = op.speed_rad_s
@@ -597,9 +602,11 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
     supply: a lubrication whose contacts are flooded reuses the point's solution (flooded
     contacts), any other is solved again (quasi-static; a dynamic study keeps the point's
     friction and says so in ``note``)."""
-    from ..outputs.study import case_name
+    from ..coupling import cfd_loss_at
+    from ..outputs.study import case_name, read_study_cfd
 
     out: dict[str, Any] = {}
+    study_cfd = read_study_cfd(scene) if "cfd" in scene.study.methods else []
     for lub in scene.study.cases:
         f_case, supply = _point_friction(scene, friction, op, lub)
         rec: dict[str, Any] = {"lubricant_supply": supply.as_dict()}
@@ -612,6 +619,17 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
             _, fr = _quasi_static_point(scene, fid, op, f_case, model=model)
             rec.update(friction_torque_Nm=fr.drive_torque_Nm, converged=fr.converged,
                        torque_by_mechanism_Nm=fr.torque_by_mechanism_Nm(op.speed_rad_s), note="")
+        if study_cfd and lub.mode == "oil_bath":
+            # the CFD row's contact: cut where the CFD results' oil begins (their gap g)
+            c = cfd_loss_at(study_cfd, bearing=scene.bearing.designation, lubricant=scene.lubricant.name,
+                            speed_rad_s=op.speed_rad_s, temperature_K=op.temperature_K,
+                            oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m)
+            if c["gap_ratio"] is not None and fid.solution != "dynamic":
+                g_cut = float(c["gap_ratio"]) * scene.geometry.roller_mean_diameter_m
+                _, fr = _quasi_static_point(scene, fid, op, dataclasses.replace(f_case, contact_film_limit_m=g_cut),
+                                            model=model)
+                rec.update(contact_film_limit_m=g_cut, friction_cut_at_g_Nm=fr.drive_torque_Nm,
+                           friction_cut_at_g_converged=fr.converged)
         out[case_name(lub)] = rec
     return out
 
@@ -695,7 +713,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # the CFD result of this point: rollers and cage through the fitted force law, the oil's
         # torque on the inner ring and the shaft (turning with the prescribed speed) on top
         # (levels from this point's result, speed exponents fitted over the same CFD model's sweep)
-        cfd, cfd_file = _cfd_result(scene, op, cfd_runs)
+        cfd, cfd_file, bnd = _cfd_point(scene, op, cfd_runs)
         law = flow_forces_from_cfd(cfd, g, sweep=cfd_runs, source=str(cfd_file))
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
@@ -730,12 +748,16 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
     hyd_out = ({**hyd.as_dict(), "roller_drag_on_the_bodies_Nm": roller_drag, "flow_force_law": law.as_dict()}
                if hyd else None)
     if cfd is not None:
-        churning = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
+        ring = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
+        # the thin films (roller end / rib, pocket faces) are analytic terms at the CFD's
+        # kinematics, added at the shaft like the rings' churning: they do not act on the bodies
+        churning = ring + bnd.thin_films_Nm
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
-                   "inner_ring_and_shaft_Nm": churning, "roller_drag_on_the_bodies_Nm": roller_drag,
+                   "boundary": bnd.as_dict(), "thin_films_Nm": bnd.thin_films_Nm,
+                   "inner_ring_and_shaft_Nm": ring, "roller_drag_on_the_bodies_Nm": roller_drag,
                    # the CFD's bodies' share at its own kinematics (pure rolling): what the
                    # flow-force laws take there; the dynamic run's share differs by its slip
-                   "bodies_share_in_the_cfd_Nm": cfd["loss_torque_at_shaft_Nm"] - churning,
+                   "bodies_share_in_the_cfd_Nm": cfd["loss_torque_at_shaft_Nm"] - ring,
                    "flow_force_law": law.as_dict(), "cfd_point": cfd["point"], "steady": cfd.get("steady"),
                    "angular_momentum_balance": _balance_of(cfd)}
     power = {c: {k: st[f"power_{c}_{k}_W"] for k in MECHANISMS} for c in CONTACTS}
@@ -816,16 +838,34 @@ def _balance_of(cfd: dict[str, Any]) -> float | None:
     return balance_of(cfd)
 
 
-def _cfd_result(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]) -> tuple[dict[str, Any], Path]:
-    """The ``kegel cfd run`` result of an operating point, among ``runs`` (:func:`_read_cfd_runs`)."""
+def _cfd_point(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]):
+    """The ``kegel cfd run`` result of an operating point, among ``runs`` (:func:`_read_cfd_runs`),
+    its file and its contact / CFD boundary (:class:`kegel.coupling.cfd_results.CfdBoundary`).
+
+    Raises
+    ------
+    KegelInputError
+        No result for the point; or a scene whose ``model.contact_film_limit`` differs from the
+        result's gap (the contact would then own oil the CFD owns too, or neither would own it).
+    """
     from ..coupling import find_cfd_result
+    from ..coupling.cfd_results import cfd_boundary
 
     lub = scene.lubrication
-    return find_cfd_result(scene.fidelity.cfd_results, bearing=scene.bearing.designation,
-                           lubricant=scene.lubricant.name, speed_rad_s=op.speed_rad_s,
-                           temperature_K=op.temperature_K, oil_level_m=lub.oil_level_m,
-                           flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m,
-                           source=scene.source, key="model.cfd_results", results=runs)
+    data, f = find_cfd_result(scene.fidelity.cfd_results, bearing=scene.bearing.designation,
+                              lubricant=scene.lubricant.name, speed_rad_s=op.speed_rad_s,
+                              temperature_K=op.temperature_K, oil_level_m=lub.oil_level_m,
+                              flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m,
+                              source=scene.source, key="model.cfd_results", results=runs)
+    bnd = cfd_boundary(data, scene.geometry.roller_mean_diameter_m, source=str(f))
+    g = scene.fidelity.contact_film_limit_m
+    if g and abs(g - bnd.contact_film_limit_m) > 1e-3 * max(g, bnd.contact_film_limit_m):
+        want = (f"{bnd.contact_film_limit_m * 1e3:.4g} mm (the gap g = {bnd.gap_ratio:g} D_w of the CFD result "
+                f"{f}) or no value: with hydraulic = \"cfd\" the contact is cut where the CFD's oil begins"
+                if bnd.gap_ratio is not None else
+                f"no value: the CFD result {f} is of the old geometry (rollers shrunk, no contact / CFD boundary)")
+        raise KegelInputError(scene.source, "model.contact_film_limit", f"{g * 1e3:.4g} mm", want)
+    return data, f, bnd
 
 
 #: results.csv: the point's own columns, then the derived ones (see _csv_row).
