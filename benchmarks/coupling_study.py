@@ -31,20 +31,24 @@ LEVELS = ("flooded", "shaft_center")
 
 
 def _scene_text(base: str, *, level: str, flow_forces: bool, axial_load: str, speed: str, duration_ms: float,
-                out: Path, threads: int) -> str:
+                out: Path, threads: int, film_limit_m: float = 0.0) -> str:
     text = base.replace('oil_level = "flooded"', f'oil_level = "{level}"')
     text = text.replace('axial_load = "1 kN"', f'axial_load = "{axial_load}"')
     text = text.replace('speed = "2000 rpm"', f'speed = "{speed}"')
     text = text.replace('duration = "220 ms"', f'duration = "{duration_ms:.6g} ms"\nthreads = {threads}')
     text = text.replace('directory = "results/32208_dynamic_cfd"', f'directory = "{out}"')
     if not flow_forces:
-        text = text.replace('hydraulic = "cfd"\ncfd_results = "benchmarks/results/cfd"', 'hydraulic = "none"')
+        # the CFD's loss is added afterwards; with the real rollers the contact is cut at the CFD's
+        # gap, as hydraulic = "cfd" does
+        cut = f'\ncontact_film_limit = "{film_limit_m * 1e3!r} mm"' if film_limit_m else ""
+        text = text.replace('hydraulic = "cfd"\ncfd_results = "benchmarks/results/cfd"', 'hydraulic = "none"' + cut)
     return text
 
 
 def main(argv: list[str]) -> int:
     import kegel
     from kegel.coupling import find_cfd_result, read_cfd_results
+    from kegel.coupling.cfd_results import cfd_boundary
     from kegel.run import run_scene
     from kegel.scene import load_scene
     from kegel.tribology import cage_speed_rad_s
@@ -70,19 +74,24 @@ def main(argv: list[str]) -> int:
             for ff in (False, True):
                 out = Path(tmp) / f"{level}_{ff}"
                 path = Path(tmp) / f"{level}_{ff}.toml"
-                path.write_text(_scene_text(base, level=level, flow_forces=ff, axial_load=args.axial_load,
+                path.write_text(_scene_text(base, level=level, flow_forces=True, axial_load=args.axial_load,
                                             speed=args.speed, duration_ms=duration_ms, out=out, threads=args.threads))
+                lub = load_scene(path).lubrication
+                cfd, f = find_cfd_result(REPO / "benchmarks" / "results" / "cfd", bearing="32208", lubricant="FVA3",
+                                         speed_rad_s=w, temperature_K=load_scene(path).operating_points[0].temperature_K,
+                                         oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= b.outer_diameter_m,
+                                         results=runs)
+                bnd = cfd_boundary(cfd, g.roller_mean_diameter_m, source=str(f))
+                path.write_text(_scene_text(base, level=level, flow_forces=ff, axial_load=args.axial_load,
+                                            speed=args.speed, duration_ms=duration_ms, out=out, threads=args.threads,
+                                            film_limit_m=bnd.contact_film_limit_m))
                 scene = load_scene(path)
                 t0 = time.perf_counter()
                 res = run_scene(scene, out, progress=False)
                 wall = time.perf_counter() - t0
                 p = res.points[0]
-                lub = scene.lubrication
-                cfd, _ = find_cfd_result(REPO / "benchmarks" / "results" / "cfd", bearing="32208", lubricant="FVA3",
-                                         speed_rad_s=w, temperature_K=p["temperature_K"], oil_level_m=lub.oil_level_m,
-                                         flooded=lub.oil_level_m >= b.outer_diameter_m, results=runs)
                 cfd_loss = cfd["loss_torque_at_shaft_Nm"]
-                hyd = p["hydraulic_torque_Nm"] if ff else cfd_loss
+                hyd = p["hydraulic_torque_Nm"] if ff else bnd.hydraulic_Nm
                 h = p.get("hydraulic") or {}
                 st = p["dynamic"]["steady"]
                 rows.append({"oil_level": level, "flow_forces": ff, "cage_slip": p["cage_slip"],
@@ -90,6 +99,8 @@ def main(argv: list[str]) -> int:
                              "hydraulic_torque_Nm": hyd, "total_torque_Nm": p["friction_torque_Nm"] + hyd,
                              "bodies_Nm": h.get("roller_drag_on_the_bodies_Nm"),
                              "rings_Nm": h.get("inner_ring_and_shaft_Nm"), "cfd_loss_Nm": cfd_loss,
+                             "thin_films_Nm": bnd.thin_films_Nm, "contact_film_limit_m": bnd.contact_film_limit_m,
+                             "cfd_geometry": bnd.geometry,
                              "cfd_bodies_share_Nm": cfd_loss + cfd["torques_Nm"]["inner_ring"]["total"]
                              + cfd["torques_Nm"]["shaft"]["total"],
                              "power_balance_error": p["power_balance_error"], "converged": p["converged"],
@@ -107,12 +118,13 @@ def main(argv: list[str]) -> int:
     atomic_write_json(out_file, meta)
     print(f"32208, Fa = {args.axial_load}, {args.speed}, 50 degC, {duration_ms:.0f} ms ({args.revolutions:g} cage "
           f"revolutions), steady means over the dynamic solution's window\n")
-    print("| oil level | flow forces | cage slip [%] | friction [mN m] | hydraulic [mN m] (bodies + rings) | "
+    print("| oil level | flow forces | cage slip [%] | friction [mN m] | hydraulic [mN m] (bodies + rings + thin films) | "
           "total [mN m] |")
     print("| --- | --- | --- | --- | --- | --- |")
     for r in rows:
-        split = (f" ({1e3 * r['bodies_Nm']:.2f} + {1e3 * r['rings_Nm']:.2f})" if r["flow_forces"] else
-                 " (CFD loss added)")
+        thin = f" + {1e3 * r['thin_films_Nm']:.2f}" if r["thin_films_Nm"] else ""
+        split = (f" ({1e3 * r['bodies_Nm']:.2f} + {1e3 * r['rings_Nm']:.2f}{thin})" if r["flow_forces"] else
+                 " (CFD loss" + (" + thin films" if thin else "") + " added)")
         print(f"| {r['oil_level'].replace('_', ' ')} | {'on' if r['flow_forces'] else 'off'} | "
               f"{100 * r['cage_slip']:.3f} | {1e3 * r['friction_torque_Nm']:.2f} | "
               f"{1e3 * r['hydraulic_torque_Nm']:.2f}{split} | {1e3 * r['total_torque_Nm']:.2f} |")
