@@ -39,8 +39,8 @@ TEMPERATURE_K = 323.15
 AXIAL_LOAD_N = 1000.0   # the seed's Figure 9 point (32208, Fa = 1 kN)
 
 
-def case_name(gap: float, cells: int, mesh: str, sector: bool) -> str:
-    return f"32208_2000rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}" + ("_sector" if sector else "_full")
+def case_name(gap: float, cells: int, mesh: str, sector: bool, speed_rpm: float = SPEED_RPM) -> str:
+    return f"32208_{speed_rpm:g}rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}" + ("_sector" if sector else "_full")
 
 
 def contact_loss_Nm(gap_m: float) -> dict:
@@ -54,13 +54,16 @@ def contact_loss_Nm(gap_m: float) -> dict:
     return {k: r[k] for k in ("friction_torque_Nm", "ehl_rolling_torque_Nm", "converged") if k in r}
 
 
-def run_one(gap: float, cells: int, mesh: str, sector: bool, n_procs: int) -> dict:
+def run_one(gap: float, cells: int, mesh: str, sector: bool, n_procs: int, max_iterations: int = 1500,
+            speed_rpm: float = SPEED_RPM) -> dict:
+    """Run (or resume) one flooded case of the study point at ``speed_rpm`` and copy its
+    results.json into the repository (``STORE``); its row (``cfd_cases.run`` figures)."""
     from kegel.cfd_cases.run import CfdPoint, run_case
 
-    p = CfdPoint(bearing="32208", speed_rad_s=SPEED_RPM * math.pi / 30, temperature_K=TEMPERATURE_K,
-                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=1500, gap_ratio=gap,
+    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
+                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
                  cells_across_gap=cells, sector=sector)
-    case = CASES / case_name(gap, cells, mesh, sector)
+    case = CASES / case_name(gap, cells, mesh, sector, speed_rpm)
     t0 = time.monotonic()
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
     data = json.loads((case / "results.json").read_text())
@@ -132,6 +135,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cells", type=int, default=3)
     ap.add_argument("--mesh", default="tiny")
     ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--max-iterations", type=int, default=1500,
+                    help="SIMPLE iterations at most (default 1500); a case resumes from its latest state")
     ap.add_argument("--report", action="store_true", help="only re-read the stored rows: contact losses and plot")
     ap.add_argument("--check-sector", action="store_true",
                     help="run g = 0.08 with one cell across as a sector and as the whole bearing")
@@ -148,7 +153,7 @@ def main(argv: list[str] | None = None) -> int:
     else:
         plan = [(g, args.cells, args.mesh, True) for g in args.gaps]
     for gap, cells, mesh, sector in plan:
-        rows.append(run_one(gap, cells, mesh, sector, args.np))
+        rows.append(run_one(gap, cells, mesh, sector, args.np, args.max_iterations))
         keep = [r for r in previous if r["case"] not in {x["case"] for x in rows}]
         write(sorted(keep + rows, key=lambda r: (not r["sector"], r["cells_across_gap"], -r["gap_ratio"])), command,
               "rows of earlier invocations are kept; each row names its case")

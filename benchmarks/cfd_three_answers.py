@@ -21,7 +21,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import shutil
 import sys
 import time
 from pathlib import Path
@@ -29,32 +28,16 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from cfd_gap_study import AXIAL_LOAD_N, CASES, STORE, TEMPERATURE_K  # noqa: E402  (one study point)
+from cfd_gap_study import AXIAL_LOAD_N, CASES, TEMPERATURE_K, run_one  # noqa: E402  (one study point)
 
 OUT = HERE / "results" / "cfd_three_answers.json"
 
 
-def case_name(speed_rpm: float, gap: float, cells: int, mesh: str) -> str:
-    return f"32208_{speed_rpm:g}rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}_sector"
-
-
 def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int, max_iterations: int) -> dict:
-    from kegel.cfd_cases.run import CfdPoint, run_case
-
-    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
-                 oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
-                 cells_across_gap=cells, sector=True)
-    case = CASES / case_name(speed_rpm, gap, cells, mesh)
-    run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
-    data = json.loads((case / "results.json").read_text())
-    meta = json.loads((case / "kegel-case.json").read_text())
-    dest = STORE / case.name
-    dest.mkdir(parents=True, exist_ok=True)
-    shutil.copyfile(case / "results.json", dest / "results.json")
-    return {"case": case.name, "gap_m": meta["geometry"]["gap_m"], "cells": data["fidelity"]["cells"],
-            "runtime_s": data["runtime_s"], "iterations": data["iterations"], "steady": data["steady"],
-            "cfd_loss_Nm": data["loss_torque_at_shaft_Nm"],
-            "angular_momentum_balance": data["angular_momentum_balance"]["relative_to_drive_torque"]}
+    """The gap study's case at this speed (:func:`cfd_gap_study.run_one`), as a row of this table."""
+    r = run_one(gap, cells, mesh, True, n_procs, max_iterations, speed_rpm=speed_rpm)
+    return {k: r[k] for k in ("case", "gap_m", "cells", "runtime_s", "iterations", "steady", "cfd_loss_Nm",
+                              "angular_momentum_balance")}
 
 
 def correlations_and_contact(speed_rpm: float, gap_m: float) -> dict:
