@@ -51,6 +51,7 @@ Layout (all sections but ``[scene]``, ``[model]`` and ``[output]`` are required)
 
     [dynamic]                                # optional, for solution = "dynamic"
     duration = "20 ms"                       # simulated time per operating point
+    max_duration = "200 ms"                  # optional: run on until settled, at most this long
     output_interval = "0.1 ms"               # spacing of the recorded time series
     speed_profile = [["0 ms", "0 rpm"], ["50 ms", "4000 rpm"]]   # default: the point's speed
     hold_axial = false                       # hold the inner ring axially (partner bearing)

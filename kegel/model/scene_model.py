@@ -72,7 +72,7 @@ ALLOWED_KEYS: dict[str, set[str]] = {
     "model": {"fidelity", "slices", "slice_model", "rib_model", "rib_cells", "cage", "solution", "hydraulic",
               "cfd_results", "tolerance", "rolling_thermal", "inlet_gap_ratio", "lubricant_supply",
               "contact_film_limit"},
-    "dynamic": {"duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
+    "dynamic": {"duration", "max_duration", "output_interval", "speed_profile", "hold_axial", "tilt_free", "average_fraction",
                 "tolerance", "checkpoint_interval", "threads", "load_profile"},
     "output": {"directory"},
     "study": {"lubrication", "hydraulic", "cfd_results"},
@@ -296,6 +296,10 @@ class DynamicSettings:
     checkpoint_interval_s: float = 5e-3
     threads: int = 0   # 0: every core the process may use
     load_profile: tuple[tuple[float, float, float], ...] = ()
+    #: automatic duration (``dynamic.max_duration``): a point whose torques and cage speed have not
+    #: settled by ``duration_s`` runs on, a quarter of it at a time, up to this; None: exactly
+    #: ``duration_s`` (:func:`kegel.dynamics.simulate`)
+    max_duration_s: float | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """Plain dictionary, written next to every result."""
@@ -547,7 +551,7 @@ def parse_dynamic(reader: Reader, table: dict[str, Any]) -> DynamicSettings:
     nothing but the table; the profiles' limits against the bearing are the validation's)."""
     kw: dict[str, Any] = {}
     for key, attr in (("duration", "duration_s"), ("output_interval", "output_interval_s"),
-                      ("checkpoint_interval", "checkpoint_interval_s")):
+                      ("checkpoint_interval", "checkpoint_interval_s"), ("max_duration", "max_duration_s")):
         if key in table:
             v = reader.quantity(table[key], "time", f"dynamic.{key}")
             if not v > 0:
@@ -558,10 +562,14 @@ def parse_dynamic(reader: Reader, table: dict[str, Any]) -> DynamicSettings:
     if kw.get("duration_s", 0.02) > MAX_DYNAMIC_DURATION_S:
         raise reader.error("dynamic.duration", table.get("duration"),
                            f"at most {MAX_DYNAMIC_DURATION_S:g} s of simulated time (time steps are microseconds)")
+    if "max_duration_s" in kw and not kw.get("duration_s", 0.02) <= kw["max_duration_s"] <= MAX_DYNAMIC_DURATION_S:
+        raise reader.error("dynamic.max_duration", table.get("max_duration"),
+                           f"a time from dynamic.duration ({kw.get('duration_s', 0.02) * 1e3:g} ms) to "
+                           f"{MAX_DYNAMIC_DURATION_S:g} s: how long a point that has not settled may run on")
     if kw.get("output_interval_s", 1e-4) < MIN_OUTPUT_INTERVAL_S:
         raise reader.error("dynamic.output_interval", table.get("output_interval"),
                            f"at least {MIN_OUTPUT_INTERVAL_S * 1e6:g} us")
-    outputs = kw.get("duration_s", 0.02) / kw.get("output_interval_s", 1e-4)
+    outputs = max(kw.get("duration_s", 0.02), kw.get("max_duration_s") or 0.0) / kw.get("output_interval_s", 1e-4)
     if outputs > MAX_DYNAMIC_OUTPUTS:
         raise reader.error("dynamic.output_interval", table.get("output_interval"),
                            f"at most {MAX_DYNAMIC_OUTPUTS} outputs per point (here {outputs:.3g}: every output keeps "

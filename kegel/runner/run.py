@@ -719,7 +719,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
     pdir = out / "dynamic" / f"point_{op.index:03d}"
     pdir.mkdir(parents=True, exist_ok=True)
     res = simulate(g, b, m, scene.lubricant, friction, temperature_K=op.temperature_K, speed_profile=profile,
-                   duration_s=dyn.duration_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
+                   duration_s=dyn.duration_s, max_duration_s=dyn.max_duration_s, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
                    radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad, slices=fid.slices,
                    method=fid.slice_model, cage=fid.cage, output_interval_s=dyn.output_interval_s,
                    average_fraction=dyn.average_fraction, rtol=dyn.tolerance, hold_axial=dyn.hold_axial,
@@ -800,7 +800,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # the means are an answer only where the torques and the cage speed have settled
         # (kegel.dynamics.settling); otherwise the figures are kept and the point says why
         "converged": bool(res.finished and st["settled"]),
-        **({} if res.finished and st["settled"] else {"failure": _not_settled(st, dyn.duration_s)}),
+        **({} if res.finished and st["settled"] else {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s)}),
         "steady_window_s": [st["window_start_s"], st["window_end_s"]],
         "steady_drift": st["drift_relative"],
         "runtime_s": res.runtime_s,
@@ -811,7 +811,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
     }
 
 
-def _not_settled(steady: dict[str, Any], duration_s: float) -> str:
+def _not_settled(steady: dict[str, Any], duration_s: float, max_duration_s: float | None = None) -> str:
     """The failure text of a dynamic point whose signals have not settled (its figures are the
     means over the last part of the run: not a steady answer)."""
     info = steady["settling"]
@@ -819,8 +819,10 @@ def _not_settled(steady: dict[str, Any], duration_s: float) -> str:
     return (f"the dynamic run has not settled: {info['reason']}; the figures are the means over "
             f"{steady['window_start_s'] * 1e3:.4g}-{steady['window_end_s'] * 1e3:.4g} ms, not a steady answer. "
             f"The steady test needs {need * 1e3:.3g} ms of settled running after the transients of the last speed "
-            f"or load change ({(need + info['window_s']) * 1e3:.3g} ms for a run steady from its start): lengthen "
-            f"dynamic.duration (now {duration_s * 1e3:.4g} ms)")
+            f"or load change ({(need + info['window_s']) * 1e3:.3g} ms for a run steady from its start): "
+            + (f"lengthen dynamic.duration (now {duration_s * 1e3:.4g} ms) or set dynamic.max_duration to let it run on"
+               if max_duration_s is None else
+               f"it ran on to dynamic.max_duration ({max_duration_s * 1e3:.4g} ms); raise that"))
 
 
 def _read_cfd_runs(scene: Scene) -> list[tuple[Path, dict[str, Any]]] | None:

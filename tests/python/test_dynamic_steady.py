@@ -275,3 +275,25 @@ def test_automatic_duration_runs_until_the_signals_settle(setup):
     assert not capped.steady["settled"]
     with pytest.raises(kegel.KegelInputError, match="max_duration_s"):
         simulate(g, b, m, lub, fr, duration_s=4e-3, max_duration_s=3e-3, **kw)
+
+
+def test_a_scene_max_duration_lets_a_drifting_point_run_on(tmp_path):
+    """The same ramp with ``dynamic.max_duration``: the point runs past its 8 ms until the cage
+    speed has settled (or says it reached the cap), and the scene checks the key's range."""
+    from kegel.errors import KegelInputError
+    from kegel.run import run_scene
+    from kegel.scene import load_scene
+
+    base = ('solution = "dynamic"\nslices = 4\n[dynamic]\nduration = "8 ms"\noutput_interval = "0.2 ms"\n'
+            'threads = 1\nspeed_profile = [["0 ms", "3000 rpm"], ["8 ms", "4000 rpm"]]\n')
+    (tmp_path / "bad.toml").write_text(scene_text(speed='"4000 rpm"', model=base + 'max_duration = "5 ms"'))
+    with pytest.raises(KegelInputError, match=r"dynamic\.max_duration.*from dynamic\.duration"):
+        load_scene(tmp_path / "bad.toml")
+    (tmp_path / "on.toml").write_text(scene_text(speed='"4000 rpm"', model=base + 'max_duration = "40 ms"'))
+    p = run_scene(load_scene(tmp_path / "on.toml"), tmp_path / "out", progress=False).points[0]
+    stats = p["dynamic"]["stats"]
+    assert stats["extended"] is True and 8e-3 < stats["duration_s"] <= 40e-3 + 1e-12
+    if p["converged"]:
+        assert p["steady_window_s"][0] >= 8e-3  # averaged only after the ramp
+    else:
+        assert stats["duration_s"] == pytest.approx(40e-3) and "dynamic.max_duration (40 ms)" in p["failure"]
