@@ -675,7 +675,8 @@ class _SteadyMonitor:
             d2 = abs(d.means[2] - d.means[1])
             worst_loss = max(abs(d.remaining), d2) / max(self.tol * abs(d.estimate), 1e-300)
             imbalance = self._imbalance(lo, k)
-            self.status = (f"loss {1e3 * d.estimate:.3g} mN m, change {max(worst_loss, worst_body):.1f} x the "
+            # the last window's mean (the extrapolated estimate swings wildly when the means turn)
+            self.status = (f"loss {1e3 * float(ml[2]):.3g} mN m, change {max(worst_loss, worst_body):.1f} x the "
                            f"steady limit, balance " + ("?" if imbalance is None else f"{100 * imbalance:+.1f} %"))
             if not (worst_loss <= 1.0 and worst_body <= 1.0):
                 self.flooded_since = None
