@@ -107,6 +107,7 @@ void bind_quasi_static(nb::module_& parent) {
         d["roller_orbit_rad_s"] = f.roller_orbit_rad_s;
         d["roller_drift_m"] = f.roller_drift_m;
         d["locked_rollers"] = f.locked_rollers;
+        d["pocket_moment_free_Nm"] = f.pocket_moment_free_Nm;
         d["roller_spin_pure_rolling_rad_s"] = f.roller_spin_pure_rolling_rad_s;
         d["drive_torque_Nm"] = f.drive_torque_Nm;
         d["outer_ring_torque_Nm"] = f.outer_ring_torque_Nm;

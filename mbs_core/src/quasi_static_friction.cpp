@@ -503,12 +503,48 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   std::vector<double> orbit(Z, w_c);
   out.locked_rollers = 0;
   out.roller_drift_m = 0.0;
+  // FreeRollers with locked rollers (loaded, but no orbit of their own: a roller on the cup
+  // alone, held there by its centrifugal force, or one that barely touches the inner ring): the
+  // cage drives them through their pockets at its speed, and the cage takes the moment that
+  // costs from the free rollers, each pressing on its pocket with an equal share q_pocket (the
+  // pocket's moment on the roller about the bearing axis), with Coulomb friction (Eq. 37) as in
+  // the pocket model. The share vanishes with the locked rollers' load, so the torque is
+  // continuous where a roller locks.
+  std::vector<char> free(Zc, 0);
+  double q_pocket = 0.0;
+  auto pocket_friction = [&](const Roller& r, double wr, double q, Eval& e) {
+    if (q == 0.0) return;
+    const double P = std::abs(q) / std::hypot(r.M.x(), r.M.y());
+    const double vs = std::abs(wr) * r.radius;
+    const double mu = tribology::cubic_friction_coefficient(fp.cubic_law(), vs);
+    e.spin_moment -= (wr >= 0 ? 1.0 : -1.0) * mu * P * r.radius;
+    e.pocket_N = P;
+    e.pocket_W = mu * P * vs;
+  };
+  auto eval_free = [&](const Roller& r, double wr, double wo) {
+    Eval e = eval(r, wr, wo, w_i, lub_o, lub_i, fp, race, ribp, false, false);
+    e.axis_moment += q_pocket;
+    pocket_friction(r, wr, q_pocket, e);
+    return e;
+  };
+  // a locked roller's spin in balance at the cage speed, its pocket's friction included
+  auto spin_locked = [&](int j, double wc) {
+    const Roller& r = rollers[j];
+    const double w_pure = wR0 * wc / wc0;
+    auto S = [&](double wr) { return eval(r, wr, wc, w_i, lub_o, lub_i, fp, race, ribp, false, true).spin_moment; };
+    double root = w_pure;
+    if (!root_near(S, w_pure * d.spin_ratio_[j], w_pure, 0.1, 1e-13 * std::abs(w_pure), root)) status = 1;
+    return root;
+  };
   if (cage_model == CageModel::FreeRollers) {
     if (int(d.orbit_ratio_.size()) != Z) d.orbit_ratio_.assign(Z, NAN);
     if (int(d.free_spin_ratio_.size()) != Z) d.free_spin_ratio_.assign(Z, NAN);
     if (d.free_jacobian_.size() != 4 * size_t(Z)) d.free_jacobian_.assign(4 * size_t(Z), NAN);
     const double hr = 1e-7 * std::abs(wR0), ho = 1e-7 * std::abs(wc0);
-    std::vector<char> free(Zc, 0);
+    double n_free = 0.0;
+    for (int pass = 0; pass < 30; ++pass) {
+    out.locked_rollers = 0;
+    std::fill(free.begin(), free.end(), 0);
     for (int j = 0; j < Zc; ++j) {
       const Roller& r = rollers[j];
       if (r.points.empty()) continue;
@@ -521,12 +557,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       // a step with them halves the correction; else they are taken afresh at the iterate.
       double* J = &d.free_jacobian_[4 * size_t(j)];
       auto newton = [&](double& wo, double& wr) {
-        Eval e0 = eval(r, wr, wo, w_i, lub_o, lub_i, fp, race, ribp, false, false);
+        Eval e0 = eval_free(r, wr, wo);
         for (int it = 0; it < 40; ++it) {
           bool fresh = false;
           if (!std::isfinite(J[0])) {
-            const Eval e1 = eval(r, wr + hr, wo, w_i, lub_o, lub_i, fp, race, ribp, false, false);
-            const Eval e2 = eval(r, wr, wo + ho, w_i, lub_o, lub_i, fp, race, ribp, false, false);
+            const Eval e1 = eval_free(r, wr + hr, wo);
+            const Eval e2 = eval_free(r, wr, wo + ho);
             J[0] = (e1.spin_moment - e0.spin_moment) / hr;
             J[1] = (e2.spin_moment - e0.spin_moment) / ho;
             J[2] = (e1.axis_moment - e0.axis_moment) / hr;
@@ -567,7 +603,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
           for (int b = 0; b < (fresh ? 12 : 1) && !accepted; ++b, lam *= 0.5) {
             const double wr_t = wr + lam * dr, wo_t = wo + lam * dO;
             if (!std::isfinite(wr_t) || !std::isfinite(wo_t) || std::abs(wo_t - wc0) > 0.5 * std::abs(wc0)) continue;
-            const Eval et = eval(r, wr_t, wo_t, w_i, lub_o, lub_i, fp, race, ribp, false, false);
+            const Eval et = eval_free(r, wr_t, wo_t);
             double cr, co;
             const double mt = correction(et, cr, co);
             if (std::isfinite(mt) && mt <= (fresh ? 1.0 - 0.25 * lam : 0.5) * m0) {
@@ -607,19 +643,36 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     }
     // time-mean orbital speed over one revolution: the harmonic mean over the azimuths, where
     // the unloaded and the locked rollers move with the cage
-    double n_free = 0.0, inv = 0.0;
+    n_free = 0.0;
+    double inv = 0.0;
     for (int j = 0; j < Zc; ++j) {
       if (!free[j]) continue;
       n_free += 1.0;
       inv += 1.0 / orbit[j];
     }
+    if (n_free == 0.0) break;
+    w_c = n_free / inv;
+    // the locked rollers, driven through their pockets at the cage speed: the moment the cage
+    // passes them, and the free rollers' share of it (next pass, until it no longer changes)
+    double M_locked = 0.0;
+    for (int j = 0; j < Zc; ++j) {
+      if (free[j] || rollers[j].points.empty()) continue;
+      spins[j] = spin_locked(j, w_c);
+      M_locked += eval(rollers[j], spins[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, false, true).axis_moment;
+    }
+    const double q_new = M_locked / n_free;
+    const double dq = q_new - q_pocket;
+    q_pocket = q_new;
+    if (std::abs(dq) <= 1e-10 * std::abs(q_new) + 1e-15) break;
+    if (pass == 29) status = 1;
+    }
     if (n_free > 0.0) {
-      w_c = n_free / inv;
       for (int j = 0; j < Zc; ++j) {
         if (free[j]) continue;
-        // unloaded and locked rollers: with the cage, spinning in balance at its new speed
+        // unloaded rollers: with the cage, spinning in balance at its speed; locked ones were
+        // solved with their pockets above
         orbit[j] = w_c;
-        spins[j] = spin_at(j, w_c);
+        if (rollers[j].points.empty()) spins[j] = spin_at(j, w_c);
       }
       for (int j = Zc; j < Z; ++j) {
         spins[j] = spins[0];
@@ -660,8 +713,20 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     out.Lambda_min[k] = 1e300;
     out.phi_max[k] = 0.0;
   }
+  const bool free_model = cage_model == CageModel::FreeRollers;
+  out.pocket_moment_free_Nm = free_model ? q_pocket : 0.0;
   for (int j = 0; j < Zc; ++j) {
-    const Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage);
+    // pocket forces: every roller in the pocket model; in the free-roller model the locked
+    // rollers (driven by the cage) and, when there are such, the free ones' shares
+    const bool locked = free_model && !free[j] && !rollers[j].points.empty() && q_pocket != 0.0;
+    Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage || locked);
+    if (free_model && free[j]) {
+      pocket_friction(rollers[j], spins[j], q_pocket, ev);
+      // the pocket's moment on a free roller does work at the roller's orbital speed, its
+      // reaction on the cage at the cage's: the difference is lost where roller and pocket meet
+      // (time-mean, the rollers' drift in their pockets)
+      ev.pocket_W += q_pocket * (w_c - orbit[j]);
+    }
     out.cage_power_W += weight * ev.pocket_W;
     t_in += weight * ev.torque_inner;
     t_out += weight * ev.torque_outer;

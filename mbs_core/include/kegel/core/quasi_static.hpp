@@ -206,7 +206,10 @@ struct BearingFriction {
   /// FreeRollers: circumferential excursion of a roller relative to its pocket over one
   /// revolution (max - min of the accumulated orbital lead), at the pitch radius [m]
   double roller_drift_m = 0.0;
-  int locked_rollers = 0;  ///< FreeRollers: loaded rollers kept at the cage speed (no solution)
+  int locked_rollers = 0;  ///< FreeRollers: loaded rollers without an orbit of their own, driven by the cage
+  /// FreeRollers: the moment about the bearing axis each free roller's pocket puts on it so that
+  /// the cage passes on what driving the locked rollers costs (0 without locked rollers) [N m]
+  double pocket_moment_free_Nm = 0.0;
   double drive_torque_Nm = 0.0;       ///< torque the shaft puts on the inner ring
   double outer_ring_torque_Nm = 0.0;  ///< reaction torque on the outer ring (the measured one)
   double power_input_W = 0.0;         ///< drive torque x inner-ring speed
