@@ -100,7 +100,8 @@ def write(rows: list[dict], command: str, note: str) -> None:
 
 
 def plot(rows: list[dict], path: Path) -> None:
-    """CFD, contact and their sum against 1/sqrt(g / D_w) for the sector rows of the finest cells."""
+    """CFD, contact and their sum against 1/sqrt(g / D_w) (the tiny 3-cell sectors), and the
+    other discretisations of the mesh study as markers (their sums in grey)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -109,16 +110,26 @@ def plot(rows: list[dict], path: Path) -> None:
     from kegel.outputs.plots import save_figure
 
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for n in sorted({r["cells_across_gap"] for r in rows if r["sector"]}):
-        sel = sorted((r for r in rows if r["sector"] and r["cells_across_gap"] == n), key=lambda r: r["inv_sqrt_gap"])
-        x = [r["inv_sqrt_gap"] for r in sel]
-        ax.plot(x, [1e3 * r["cfd_loss_Nm"] for r in sel], "o-", label=f"CFD (n = {n} cells across)")
-        with_contact = [r for r in sel if r.get("contact")]
-        if with_contact:
-            xc = [r["inv_sqrt_gap"] for r in with_contact]
-            ax.plot(xc, [1e3 * r["contact"]["friction_torque_Nm"] for r in with_contact], "s--",
-                    label="contact friction, cut at g")
-            ax.plot(xc, [1e3 * r["sum_Nm"] for r in with_contact], "D-", label=f"contact + CFD (n = {n})")
+    # the gap study: the tiny background with 3 cells across each gap, contact and sum with it
+    sel = sorted((r for r in rows if r["sector"] and r["cells_across_gap"] == 3 and r["mesh"] == "tiny"),
+                 key=lambda r: r["inv_sqrt_gap"])
+    x = [r["inv_sqrt_gap"] for r in sel]
+    ax.plot(x, [1e3 * r["cfd_loss_Nm"] for r in sel], "o-", label="CFD (tiny, 3 cells across)")
+    with_contact = [r for r in sel if r.get("contact")]
+    if with_contact:
+        xc = [r["inv_sqrt_gap"] for r in with_contact]
+        ax.plot(xc, [1e3 * r["contact"]["friction_torque_Nm"] for r in with_contact], "s--",
+                label="contact friction, cut at g")
+        ax.plot(xc, [1e3 * r["sum_Nm"] for r in with_contact], "D-", label="contact + CFD")
+    # the mesh study at the default gap: the other discretisations, as markers
+    marks = {("tiny", 6): "^", ("small", 3): "v", ("fine", 3): "P"}
+    for r in rows:
+        key = (r["mesh"], r["cells_across_gap"])
+        if r["sector"] and key in marks:
+            ax.plot([r["inv_sqrt_gap"]], [1e3 * r["cfd_loss_Nm"]], marks[key], ms=7,
+                    label=f"CFD ({key[0]}, {key[1]} cells across)")
+            if r.get("sum_Nm") is not None:
+                ax.plot([r["inv_sqrt_gap"]], [1e3 * r["sum_Nm"]], marks[key], ms=7, color="0.4")
     ax.set_xlabel("1 / sqrt(g / D_w)")
     ax.set_ylabel("torque at the shaft [mN m]")
     ax.set_title("32208 flooded, 2000 rpm, 50 degC, 1 kN: the contact / CFD split")
