@@ -40,20 +40,21 @@ def run_cfd(speed_rpm: float, gap: float, cells: int, mesh: str, n_procs: int, m
                               "angular_momentum_balance")}
 
 
-def correlations_and_contact(speed_rpm: float, gap_m: float) -> dict:
-    """Contact friction cut at g and uncut, and Liebrecht's and SKF's flooded hydraulic losses."""
+def correlations_and_contact(speed_rpm: float, gap_m: float, oil_level: str = "flooded") -> dict:
+    """Contact friction cut at g and uncut, and Liebrecht's and SKF's hydraulic losses, at
+    ``oil_level`` (``flooded`` or ``shaft_center``; the contacts' supply follows it)."""
     import kegel
     from kegel.runner.film_limit import contact_loss_at_film_limit
 
     kw = dict(bearing="32208", speed=f"{speed_rpm:g} rpm", axial_load=f"{AXIAL_LOAD_N:g} N",
-              temperature=f"{TEMPERATURE_K - 273.15:g} degC", oil_level="flooded")
+              temperature=f"{TEMPERATURE_K - 273.15:g} degC", oil_level=oil_level)
     cut = contact_loss_at_film_limit(gap_m, **kw)
     uncut = contact_loss_at_film_limit(0.0, **kw)
     hyd = {}
     for method in ("liebrecht", "skf"):
         r = kegel.Bearing("32208").friction(speed=f"{speed_rpm:g} rpm", axial_load=f"{AXIAL_LOAD_N:g} N",
                                             temperature=f"{TEMPERATURE_K - 273.15:g} degC",
-                                            lubrication="flooded", hydraulic=method)
+                                            lubrication=oil_level, hydraulic=method)
         hyd[method] = float(r.hydraulic_torque_Nm)
     return {"contact_cut_at_g_Nm": cut["friction_torque_Nm"], "contact_uncut_Nm": uncut["friction_torque_Nm"],
             "liebrecht_Nm": hyd["liebrecht"], "skf_drag_Nm": hyd["skf"]}

@@ -1,0 +1,80 @@
+"""The three answers at the shaft centre with the real rollers: a first point (issue 29, item 4).
+
+The 32208, FVA 3 at 50 degC, Fa = 1 kN, 2000 rpm, oil to the shaft centre. The CFD is the whole
+bearing (gravity and the free surface rule out the flooded sector) with the real rollers at the
+default gap g = 0.08 D_w and the ``tiny`` level's wall size in the gaps (about one cell across
+0.8 mm: 76 k cells; three cells across would need about 1.4 M). Made by
+
+    .venv/bin/kegel cfd run --bearing 32208 --speed "2000 rpm" --oil-level shaft_center --mesh tiny --np 2 \\
+        --gap-ratio 0.08 --max-courant 10 --max-interface-courant 3 --max-wall-time "50 min" \\
+        --output results/cfd/oilbath_real/32208_2000rpm_shaft_center_tiny_g0.08
+    .venv/bin/python benchmarks/cfd_oil_bath_real_rollers.py
+
+The three totals, as in the flooded table (benchmarks/cfd_three_answers.py): contact cut at g +
+CFD + thin films, uncut contact + Liebrecht, uncut contact + SKF drag; the contacts' supply is the
+shaft-centre one (kegel.supply). The thin films are the flooded estimate (the roller end / rib
+and pocket films taken as full; in an oil bath they are an upper bound). One cell across a gap
+reads the wedge low: the flooded whole bearing with one cell across each gap gave 74.0 mN m
+against the 3-cell sector's 84.0 (the gap study's --check-sector run, docs/cfd.md), a factor 1.135
+that the table applies beside the raw CFD (an estimate: the oil bath's wall-size mesh has one to
+two cells across, and its wedges are partly dry).
+
+Output: ``benchmarks/results/cfd_oil_bath_real_rollers.json`` and a Markdown table on stdout.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(REPO))
+
+from cfd_three_answers import correlations_and_contact  # noqa: E402
+
+CASE = REPO / "results" / "cfd" / "oilbath_real" / "32208_2000rpm_shaft_center_tiny_g0.08"
+OUT = HERE / "results" / "cfd_oil_bath_real_rollers.json"
+#: flooded 32208 at 2000 rpm, g = 0.08 D_w: the 3-cell sector (83.99 mN m) over the whole bearing
+#: with one cell across each gap (74.03 mN m, the gap study's --check-sector run; docs/cfd.md)
+ONE_CELL_FACTOR = 83.99 / 74.03
+
+
+def main() -> int:
+    from kegel.io import atomic_write_json, provenance
+
+    data = json.loads((CASE / "results.json").read_text())
+    meta = json.loads((CASE / "kegel-case.json").read_text())
+    gap_m = meta["geometry"]["gap_m"]
+    cc = correlations_and_contact(2000.0, gap_m, oil_level="shaft_center")
+    cfd, thin = float(data["loss_torque_at_shaft_Nm"]), float(data.get("thin_film_loss_Nm") or 0.0)
+    row = {"case": str(CASE.relative_to(REPO)), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
+           "runtime_s": data["runtime_s"], "simulated_time_s": data.get("simulated_time_s"),
+           "stopped_by": data.get("stopped_by"), "steady": data.get("steady"),
+           "angular_momentum_balance": (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque"),
+           "cfd_loss_Nm": cfd, "cfd_loss_one_cell_corrected_Nm": cfd * ONE_CELL_FACTOR, "thin_films_Nm": thin,
+           **cc}
+    row["contact_plus_cfd_plus_thin_films_Nm"] = cc["contact_cut_at_g_Nm"] + cfd + thin
+    row["corrected_total_Nm"] = cc["contact_cut_at_g_Nm"] + cfd * ONE_CELL_FACTOR + thin
+    row["contact_plus_liebrecht_Nm"] = cc["contact_uncut_Nm"] + cc["liebrecht_Nm"]
+    row["contact_plus_skf_Nm"] = cc["contact_uncut_Nm"] + cc["skf_drag_Nm"]
+    atomic_write_json(OUT, {"command": "benchmarks/cfd_oil_bath_real_rollers.py",
+                            "point": "32208, FVA 3, 50 degC, Fa = 1 kN, 2000 rpm, oil to the shaft centre",
+                            "one_cell_factor": ONE_CELL_FACTOR, "row": row, "provenance": provenance()})
+    m = {k: 1e3 * v for k, v in row.items() if isinstance(v, float) and k.endswith("_Nm")}
+    print("| contact cut at g | CFD (x 1.135 for one cell) | thin films | **contact + CFD + thin films** | "
+          "contact (uncut) | Liebrecht | **contact + Liebrecht** | SKF drag | **contact + SKF** |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    print(f"| {m['contact_cut_at_g_Nm']:.1f} | {m['cfd_loss_Nm']:.1f} ({m['cfd_loss_one_cell_corrected_Nm']:.1f}) | "
+          f"{m['thin_films_Nm']:.1f} | **{m['contact_plus_cfd_plus_thin_films_Nm']:.1f}** "
+          f"({m['corrected_total_Nm']:.1f}) | {m['contact_uncut_Nm']:.1f} | {m['liebrecht_Nm']:.1f} | "
+          f"**{m['contact_plus_liebrecht_Nm']:.1f}** | {m['skf_drag_Nm']:.1f} | **{m['contact_plus_skf_Nm']:.1f}** |")
+    print(f"\nCFD: {row['cells']} cells, {row['runtime_s'] / 60:.0f} min, stopped by {row['stopped_by']}, "
+          f"steady {row['steady']}, balance {row['angular_momentum_balance']}\n{OUT}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
