@@ -166,12 +166,19 @@ def command(args: argparse.Namespace) -> int:
     if cfd_rows:
         print("CFD results at the same bearing, lubricant and temperature (kegel cfd run; the correlations "
               "evaluated at each result's own speed and oil level), torques in N mm:")
-        _print_table(("oil level", "n [rpm]", "mesh", "cells", "CFD loss", "balance [%]", "Liebrecht", "SKF drag",
-                      "CFD wall time [min]", "file"),
-                     [(c["oil_level"], c["speed_rpm"], c["mesh"], c["cells"], mm(c["loss_torque_Nm"]),
+        _print_table(("oil level", "n [rpm]", "mesh", "cells", "g / D_w", "CFD loss", "thin films", "balance [%]",
+                      "Liebrecht", "SKF drag", "CFD wall time [min]", "file"),
+                     [(c["oil_level"], c["speed_rpm"], c["mesh"], c["cells"],
+                       "shrunk rollers" if c["gap_ratio"] is None else c["gap_ratio"], mm(c["loss_torque_Nm"]),
+                       mm(c["thin_films_Nm"]),
                        None if c["angular_momentum_balance"] is None else 100 * c["angular_momentum_balance"],
                        mm(c["liebrecht_total_Nm"]), mm(c["skf_drag_Nm"]),
                        None if c["wall_time_s"] is None else c["wall_time_s"] / 60, c["file"]) for c in cfd_rows])
+        if any(c["gap_ratio"] is not None for c in cfd_rows):
+            print("  real rollers (g / D_w given): the CFD owns the oil beyond the gap g, the contact model the oil "
+                  "within it (cut at g, kegel run does it), and the films thinner than the CFD's clearance are "
+                  "the thin-film terms; compare CFD + thin films + the contact's cut with a correlation "
+                  "(docs/cfd.md, three answers). Shrunk rollers: the old geometry, its level set by that gap.")
         from ..coupling.cfd_results import BALANCE_LIMIT
 
         off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None
@@ -197,7 +204,7 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
 
     from ..correlations import hydraulic_torques
     from ..correlations.skf import skf_drag_moment
-    from ..coupling.cfd_results import TEMPERATURE_TOLERANCE_K, balance_of, read_cfd_results
+    from ..coupling.cfd_results import TEMPERATURE_TOLERANCE_K, balance_of, cfd_boundary, read_cfd_results
 
     out = []
     for path in paths:
@@ -226,9 +233,11 @@ def _cfd_loss_rows(paths: list[str], bearing, lubricant: str, T: float, g, state
                         mesh_s = 0.0
                 wall = float(data["runtime_s"]) + mesh_s
             bal = balance_of(data)
+            bnd = cfd_boundary(data, g.roller_mean_diameter_m, source=str(f))
             out.append({"file": str(f), "oil_level": name, "oil_level_m": None if flooded else h,
                         "speed_rpm": w * 30 / math.pi, "mesh": data["fidelity"].get("mesh"),
                         "cells": data["fidelity"].get("cells"), "loss_torque_Nm": data["loss_torque_at_shaft_Nm"],
+                        "gap_ratio": bnd.gap_ratio, "thin_films_Nm": bnd.thin_films_Nm,
                         "steady": data.get("steady"), "angular_momentum_balance": bal,
                         "liebrecht_total_Nm": lie.total_Nm, "skf_drag_Nm": math.copysign(skf.drag_Nm, w),
                         "wall_time_s": wall})
