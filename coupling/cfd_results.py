@@ -125,8 +125,9 @@ def cfd_result_files(path: str | Path) -> list[Path]:
 def _describe(point: dict[str, Any]) -> str:
     level = point.get("oil_level_m")
     lvl = "flooded" if level is None else f"oil level {1e3 * level:.1f} mm"
-    r = point.get("gap_ratio")
-    geo = ", shrunk rollers" if r is None else f", gap {r:g} D_w"
+    r = point.get("gap_ratio", "")
+    geo = (", shrunk rollers" if r is None else f", gap {r:g} D_w" if isinstance(r, (int, float)) and
+           not isinstance(r, bool) else "" if r == "" else f", gap {r!r}")
     return (f"{point.get('bearing')} {point.get('lubricant')} at {point.get('speed_rad_s', 0.0) * 30 / math.pi:.0f} rpm, "
             f"{point.get('temperature_K', 0.0) - 273.15:.1f} degC, {lvl}{geo}")
 
@@ -183,15 +184,32 @@ def find_cfd_result(path: str | Path, *, bearing: str, lubricant: str, speed_rad
         results = read_cfd_results(path, source=source, key=key)
     # among the results of this bearing, lubricant, temperature and level, those of one geometry
     # (the real rollers at the default gap first) and per speed the finest mesh
-    for w, f, data in _matching(results, bearing, lubricant, temperature_K, oil_level_m, flooded):
-        if abs(w / abs(speed_rad_s) - 1.0) <= SPEED_TOLERANCE:
+    rows = _matching(results, bearing, lubricant, temperature_K, oil_level_m, flooded)
+    for _, f, data in rows:
+        # the signed speed: a result computed at +w is not one for -w
+        if abs(float(data["point"].get("speed_rad_s", 0.0)) / speed_rad_s - 1.0) <= SPEED_TOLERANCE:
             return data, f
     found = [_describe(data["point"]) for _, data in results]
-    want = _describe({"bearing": bearing, "lubricant": lubricant, "speed_rad_s": speed_rad_s,
-                      "temperature_K": temperature_K, "oil_level_m": None if flooded else oil_level_m})
+    wanted: dict[str, Any] = {"bearing": bearing, "lubricant": lubricant, "speed_rad_s": speed_rad_s,
+                              "temperature_K": temperature_K, "oil_level_m": None if flooded else oil_level_m}
+    if rows:  # the geometry these results use
+        wanted["gap_ratio"] = rows[0][2]["point"].get("gap_ratio")
+    want = _describe(wanted)
     have = "; ".join(found) if found else "no kegel cfd results"
+    other = (" (results of another CFD geometry are not mixed with the one these results use)"
+             if rows and len({cfd_geometry_key(d["point"]) for _, d in results}) > 1 else "")
     raise KegelInputError(source, key, str(path),
-                          f"a CFD result for {want} (found: {have}); run `kegel cfd run` for this point")
+                          f"a CFD result for {want} (found: {have}){other}; run `kegel cfd run` for this point")
+
+
+def cfd_geometry_key(point: dict[str, Any]) -> tuple:
+    """What makes two CFD results the same model beside their speed: the flow-force sweep's
+    :func:`kegel.coupling.flow_forces.cfd_model_key` (gap, pocket clearance, housing, frame,
+    cage, bearing, lubricant, ...), so a lookup or an interpolation never joins results of
+    different geometries."""
+    from .flow_forces import cfd_model_key
+
+    return cfd_model_key(point)
 
 
 def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubricant: str, temperature_K: float,
@@ -202,8 +220,10 @@ def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubrican
     Results of different geometries (gap ratios, or the old shrunk rollers) are never mixed: the
     CFD's loss depends on where the contact model stops. The geometry taken is the real rollers
     at the default gap (``GAP_RATIO`` of :mod:`kegel.cfd_cases.geometry`) when such results exist,
-    else the real-roller gap with the most speeds, else the old geometry."""
-    groups: dict[float | None, list[tuple[Path, dict[str, Any]]]] = {}
+    else the real-roller model with the most results, else the old geometry; a model is
+    :func:`cfd_geometry_key` (gap, pocket clearance, housing, frame, cage, ...)."""
+    groups: dict[tuple, list[tuple[Path, dict[str, Any]]]] = {}
+    gap: dict[tuple, float | None] = {}
     for f, data in results:
         pt = data["point"]
         level = pt.get("oil_level_m")
@@ -212,16 +232,17 @@ def _matching(results: list[tuple[Path, dict[str, Any]]], bearing: str, lubrican
                 and (level is None) == flooded and (flooded or abs(level - oil_level_m) <= OIL_LEVEL_TOLERANCE_M)):
             continue
         r = pt.get("gap_ratio")
-        groups.setdefault(None if r is None else round(float(r), 9), []).append((f, data))
+        if r is not None and (isinstance(r, bool) or not isinstance(r, (int, float)) or not (math.isfinite(r) and r > 0)):
+            raise KegelInputError(str(f), "point.gap_ratio", r, "a positive fraction of the roller diameter")
+        k = cfd_geometry_key(pt)
+        groups.setdefault(k, []).append((f, data))
+        gap[k] = None if r is None else float(r)
     if not groups:
         return []
-    real = [r for r in groups if r is not None]
-    if DEFAULT_GAP_RATIO in groups:
-        pick: float | None = DEFAULT_GAP_RATIO
-    elif real:
-        pick = max(real, key=lambda r: (len(groups[r]), -r))
-    else:
-        pick = None
+    # the real rollers at the default gap, then the real-roller model with the most speeds, then
+    # the old geometry
+    pick = max(groups, key=lambda k: (gap[k] is not None and abs(gap[k] - DEFAULT_GAP_RATIO) < 1e-9,
+                                      gap[k] is not None, len(groups[k])))
     by_speed: list[tuple[float, Path, dict[str, Any]]] = []
     for f, data in groups[pick]:
         pt = data["point"]
@@ -319,6 +340,6 @@ def cfd_loss_at(results: list[tuple[Path, dict[str, Any]]], *, bearing: str, lub
     if len(meshes) > 1:
         note += f"; mixed mesh levels {sorted(str(m) for m in meshes)}"
     a, b = parts[j - 1].thin_films_Nm, parts[j].thin_films_Nm
-    thin = _loglog(w, speeds[j - 1], a, speeds[j], b) if a > 0 and b > 0 else 0.0
+    thin = _loglog(w, speeds[j - 1], a, speeds[j], b)  # linear where an end is 0
     return with_thin({**base, "status": "interpolated", "loss_torque_at_shaft_Nm": value,
                       "error_rel": max(misses) if misses else None, "note": note, **used([j - 1, j])}, thin)

@@ -128,6 +128,10 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                     if case.get("friction_cut_at_g_Nm") is not None:
                         row.update(friction_torque_Nm=float(case["friction_cut_at_g_Nm"]),
                                    contact_film_limit_m=case.get("contact_film_limit_m"))
+                        if case.get("friction_cut_at_g_converged") is False:
+                            row["cut_not_converged"] = True
+                            warns.append(Warning_("not_converged", f"the contact friction cut at the CFD's gap for "
+                                                  f"{row['lubrication']} did not converge: the CFD row has no total"))
                     else:
                         warns.append(Warning_("cfd_contact_uncut", f"the CFD row of {row['lubrication']} adds the "
                                               "CFD beyond its gap g to a contact friction that was not cut at g "
@@ -155,7 +159,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                                           f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
                                           "read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")
-            row["total_torque_Nm"] = None if hyd is None else row["friction_torque_Nm"] + hyd
+            row["total_torque_Nm"] = (None if hyd is None or row.pop("cut_not_converged", False)
+                                      else row["friction_torque_Nm"] + hyd)
             row["warnings"] = [x.as_dict() for x in warns]
             rows.append(row)
     return rows

@@ -440,7 +440,7 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
         # the CFD loss torque of this point (hydraulic power / shaft speed), as computed, and the
         # thin films the CFD leaves to analytic terms (the contact was cut at the CFD's gap)
         cfd, cfd_file, bnd = _cfd_point(scene, op, cfd_runs)
-        hyd_torque = bnd.hydraulic_Nm
+        hyd_torque = math.copysign(bnd.hydraulic_Nm, op.speed_rad_s)
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "boundary": bnd.as_dict(),
                    "torques_Nm": cfd["torques_Nm"], "cfd_point": cfd["point"], "steady": cfd.get("steady"),
@@ -624,7 +624,7 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
             c = cfd_loss_at(study_cfd, bearing=scene.bearing.designation, lubricant=scene.lubricant.name,
                             speed_rad_s=op.speed_rad_s, temperature_K=op.temperature_K,
                             oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m)
-            if c["gap_ratio"] is not None and fid.solution != "dynamic":
+            if c["gap_ratio"] is not None and c["status"] != "missing" and fid.solution != "dynamic":
                 g_cut = float(c["gap_ratio"]) * scene.geometry.roller_mean_diameter_m
                 _, fr = _quasi_static_point(scene, fid, op, dataclasses.replace(f_case, contact_film_limit_m=g_cut),
                                             model=model)
@@ -751,7 +751,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         ring = -(cfd["torques_Nm"]["inner_ring"]["total"] + cfd["torques_Nm"]["shaft"]["total"])
         # the thin films (roller end / rib, pocket faces) are analytic terms at the CFD's
         # kinematics, added at the shaft like the rings' churning: they do not act on the bodies
-        churning = ring + bnd.thin_films_Nm
+        churning = ring + math.copysign(bnd.thin_films_Nm, op.speed_rad_s)
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "boundary": bnd.as_dict(), "thin_films_Nm": bnd.thin_films_Nm,
                    "inner_ring_and_shaft_Nm": ring, "roller_drag_on_the_bodies_Nm": roller_drag,
@@ -800,7 +800,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # the means are an answer only where the torques and the cage speed have settled
         # (kegel.dynamics.settling); otherwise the figures are kept and the point says why
         "converged": bool(res.finished and st["settled"]),
-        **({} if res.finished and st["settled"] else {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s)}),
+        **({} if res.finished and st["settled"] else
+           {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s if res.stats.get("extended") else None)}),
         "steady_window_s": [st["window_start_s"], st["window_end_s"]],
         "steady_drift": st["drift_relative"],
         "runtime_s": res.runtime_s,

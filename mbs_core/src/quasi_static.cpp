@@ -281,7 +281,9 @@ RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<Slice
   d.rollers[j].rib_N = r.Qrib;
   Eigen::Vector3d res = r.residual;
   if (r.Qi == 0.0 && r.Qrib == 0.0) {
-    // free of the inner ring: the component along the cup generator (in the roller's plane,
+    // free of the inner ring (whichever way its iteration ended: the walk limit, no step along
+    // the net force, or the iteration limit on the slide's plateau, which is how the 32216 at
+    // Fr = 20 kN ends): the component along the cup generator (in the roller's plane,
     // radial and axial) is carried by the cage pocket, which holds the roller's place along
     // the cup; only the balance across the cup and of the tilt moment is the roller's own
     const double ao = m.values().cup_angle_rad;

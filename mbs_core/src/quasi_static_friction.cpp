@@ -512,6 +512,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   // continuous where a roller locks.
   std::vector<char> free(Zc, 0);
   double q_pocket = 0.0;
+  bool cage_drives_locked = false;  // free rollers exist and the locked ones are driven by the cage
   auto pocket_friction = [&](const Roller& r, double wr, double q, Eval& e) {
     if (q == 0.0) return;
     const double P = std::abs(q) / std::hypot(r.M.x(), r.M.y());
@@ -650,7 +651,10 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       n_free += 1.0;
       inv += 1.0 / orbit[j];
     }
-    if (n_free == 0.0) break;
+    if (n_free == 0.0) {
+      q_pocket = 0.0;  // no free roller to pass the moment to: the common cage solve below
+      break;
+    }
     w_c = n_free / inv;
     // the locked rollers, driven through their pockets at the cage speed: the moment the cage
     // passes them, and the free rollers' share of it (next pass, until it no longer changes)
@@ -666,6 +670,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     if (std::abs(dq) <= 1e-10 * std::abs(q_new) + 1e-15) break;
     if (pass == 29) status = 1;
     }
+    cage_drives_locked = n_free > 0.0;
     if (n_free > 0.0) {
       for (int j = 0; j < Zc; ++j) {
         if (free[j]) continue;
@@ -718,7 +723,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   for (int j = 0; j < Zc; ++j) {
     // pocket forces: every roller in the pocket model; in the free-roller model the locked
     // rollers (driven by the cage) and, when there are such, the free ones' shares
-    const bool locked = free_model && !free[j] && !rollers[j].points.empty() && q_pocket != 0.0;
+    const bool locked = free_model && cage_drives_locked && !free[j] && !rollers[j].points.empty();
     Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage || locked);
     if (free_model && free[j]) {
       pocket_friction(rollers[j], spins[j], q_pocket, ev);
