@@ -113,6 +113,10 @@ def test_the_shipped_sweeps_give_these_exponents(b32208, runs):
             key = "flooded" if d["point"]["oil_level_m"] is None else "shaft_center"
             got[key] = flow_forces_from_cfd(d, g, sweep=runs, source=str(f)).provenance["exponents"]
     assert got["flooded"] == pytest.approx({"orbit": 1.48, "spin": 1.20, "cage": 1.40}, abs=0.01)
+    # the physics bound: a drag between viscous (1) and form drag (2) in the speed (the real
+    # rollers; the old geometry's shaft-centre cage drag, 0.84, grew more slowly than viscous:
+    # the oil the inner ring drags along turns with the cage more as the speed rises)
+    assert all(1.0 <= n <= 2.0 for n in got["flooded"].values()), got
     assert got["shaft_center"] == pytest.approx({"orbit": 1.72, "spin": 0.99, "cage": 0.84}, abs=0.01)
 
 
@@ -400,3 +404,21 @@ def test_geometries_do_not_mix_and_the_real_rollers_win(tmp_path):
         shutil.rmtree(p)
     c = cfd_loss_at(read_cfd_results(tmp_path), speed_rad_s=3000 * RPM, **kw)
     assert c["gap_ratio"] is None and c["thin_films_Nm"] == 0.0 and all("small" in x for x in c["files"])
+
+
+def test_thin_films_interpolate_through_a_zero_end(tmp_path):
+    """Between a result with thin films and one without (0 N m), the interpolated thin films lie
+    between them (linear where a power law cannot pass through 0), never a silent 0."""
+    from kegel.coupling import cfd_loss_at
+
+    src = [CFD / f"32208_{n}rpm_flooded_50C_tiny_g0.08_n3_sector" / "results.json" for n in (1000, 2000)]
+    runs = []
+    for i, f in enumerate(src):
+        d = json.loads(f.read_text())
+        if i == 0:
+            d["thin_film_loss_Nm"] = 0.0
+        runs.append((f, d))
+    c = cfd_loss_at(runs, bearing="32208", lubricant="FVA3", speed_rad_s=1500 * RPM, temperature_K=323.15,
+                    oil_level_m=0.08, flooded=True)
+    hi = runs[1][1]["thin_film_loss_Nm"]
+    assert c["status"] == "interpolated" and c["thin_films_Nm"] == pytest.approx(0.5 * hi, rel=1e-6)
