@@ -8,7 +8,10 @@ default gap g = 0.08 D_w and the ``tiny`` level's wall size in the gaps (about o
     .venv/bin/kegel cfd run --bearing 32208 --speed "2000 rpm" --oil-level shaft_center --mesh tiny --np 2 \\
         --gap-ratio 0.08 --max-courant 10 --max-interface-courant 3 --max-wall-time "50 min" \\
         --output results/cfd/oilbath_real/32208_2000rpm_shaft_center_tiny_g0.08
-    .venv/bin/python benchmarks/cfd_oil_bath_real_rollers.py
+    .venv/bin/python benchmarks/cfd_oil_bath_real_rollers.py [--speed 2000]
+
+(other speeds the same with ``--speed "N rpm"`` and ``32208_Nrpm_...`` in the output folder; the
+JSON keeps one row per speed.)
 
 The three totals, as in the flooded table (benchmarks/cfd_three_answers.py): contact cut at g +
 CFD + thin films, uncut contact + Liebrecht, uncut contact + SKF drag; the contacts' supply is the
@@ -36,25 +39,32 @@ sys.path.insert(0, str(REPO))
 
 from cfd_three_answers import correlations_and_contact  # noqa: E402
 
-CASE = REPO / "results" / "cfd" / "oilbath_real" / "32208_2000rpm_shaft_center_tiny_g0.08"
+CASES = REPO / "results" / "cfd" / "oilbath_real"
 OUT = HERE / "results" / "cfd_oil_bath_real_rollers.json"
 #: flooded 32208 at 2000 rpm, g = 0.08 D_w: the 3-cell sector (83.99 mN m) over the whole bearing
 #: with one cell across each gap (74.03 mN m, the gap study's --check-sector run; docs/cfd.md)
 ONE_CELL_FACTOR = 83.99 / 74.03
 
 
-def main() -> int:
+def main(argv: list[str] | None = None) -> int:
+    import argparse
+
     from kegel.io import atomic_write_json, provenance
 
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--speed", type=float, default=2000.0, help="shaft speed [rpm] of the case (default 2000)")
+    args = ap.parse_args(argv)
+    rpm = args.speed
+    CASE = CASES / f"32208_{rpm:g}rpm_shaft_center_tiny_g0.08"
     data = json.loads((CASE / "results.json").read_text())
     meta = json.loads((CASE / "kegel-case.json").read_text())
     gap_m = meta["geometry"]["gap_m"]
-    cc = correlations_and_contact(2000.0, gap_m, oil_level="shaft_center")
+    cc = correlations_and_contact(rpm, gap_m, oil_level="shaft_center")
     cfd = float(data["loss_torque_at_shaft_Nm"])
-    flooded = json.loads((REPO / "benchmarks" / "results" / "cfd" / "32208_2000rpm_flooded_50C_tiny_g0.08_n3_sector"
+    flooded = json.loads((REPO / "benchmarks" / "results" / "cfd" / f"32208_{rpm:g}rpm_flooded_50C_tiny_g0.08_n3_sector"
                           / "results.json").read_text())
     thin = float(flooded["thin_film_loss_Nm"])  # the upper bound: full films
-    row = {"case": str(CASE.relative_to(REPO)), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
+    row = {"speed_rpm": rpm, "case": str(CASE.relative_to(REPO)), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
            "runtime_s": data["runtime_s"], "simulated_time_s": data.get("simulated_time_s"),
            "stopped_by": data.get("stopped_by"), "steady": data.get("steady"),
            "angular_momentum_balance": (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque"),
@@ -66,9 +76,12 @@ def main() -> int:
     row["corrected_total_Nm"] = cc["contact_cut_at_g_Nm"] + cfd * ONE_CELL_FACTOR + thin
     row["contact_plus_liebrecht_Nm"] = cc["contact_uncut_Nm"] + cc["liebrecht_Nm"]
     row["contact_plus_skf_Nm"] = cc["contact_uncut_Nm"] + cc["skf_drag_Nm"]
-    atomic_write_json(OUT, {"command": "benchmarks/cfd_oil_bath_real_rollers.py",
-                            "point": "32208, FVA 3, 50 degC, Fa = 1 kN, 2000 rpm, oil to the shaft centre",
-                            "one_cell_factor": ONE_CELL_FACTOR, "row": row, "provenance": provenance()})
+    old = json.loads(OUT.read_text()) if OUT.is_file() else {}
+    rows = [r for r in old.get("rows", [old["row"]] if "row" in old else []) if r.get("speed_rpm", 2000.0) != rpm]
+    rows = sorted(rows + [row], key=lambda r: r.get("speed_rpm", 2000.0))
+    atomic_write_json(OUT, {"command": "benchmarks/cfd_oil_bath_real_rollers.py --speed N",
+                            "point": "32208, FVA 3, 50 degC, Fa = 1 kN, oil to the shaft centre",
+                            "one_cell_factor": ONE_CELL_FACTOR, "rows": rows, "provenance": provenance()})
     m = {k: 1e3 * v for k, v in row.items() if isinstance(v, float) and k.endswith("_Nm")}
     print("| contact cut at g | CFD (x 1.135 for one cell) | thin films (upper bound) | **contact + CFD (+ thin "
           "films)** | contact (uncut) | Liebrecht | **contact + Liebrecht** | SKF drag | **contact + SKF** |")
