@@ -175,11 +175,12 @@ def _solve(payload: _Payload, indices: Sequence[int]) -> list[tuple[int, dict[st
     model = bearing_model(scene.geometry, scene.bearing, scene.material, slices=fid.slices, method=fid.slice_model)
     data = _core.quasi_static.BearingData(model)
     cfd_runs = R._read_cfd_runs(scene)
+    study_cfd = R.read_study_cfd(scene)
     out = []
     for i in indices:
         op = scene.operating_points[i]
         point, data = R._solve_point(scene, fid, op, friction, model, data, payload.work, False, cfd_runs,
-                                     payload.uncertainty)
+                                     payload.uncertainty, study_cfd)
         out.append((i, point))
     return out
 

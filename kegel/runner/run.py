@@ -211,7 +211,8 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
                 continue
             if op.index in starts:
                 data = _core.quasi_static.BearingData(model)  # a chain starts from a fresh state
-            point, data = _solve_point(scene, fid, op, friction, model, data, work, progress, cfd_runs, uncertainty)
+            point, data = _solve_point(scene, fid, op, friction, model, data, work, progress, cfd_runs, uncertainty,
+                                       study_cfd)
             points.append(finish_point(point))
             if on_point:
                 on_point(points[-1])
@@ -245,26 +246,29 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
 
 
 def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: Path, progress: bool,
-                 cfd_runs, uncertainty: "UncertaintyOptions | None"):
+                 cfd_runs, uncertainty: "UncertaintyOptions | None",
+                 study_cfd: list[tuple[Path, dict[str, Any]]] | None = None):
     """One operating point's record (a failed record when its solver raised) and the state to
-    warm-start the next point of its chain from; :mod:`kegel.parallel` calls it in the workers."""
+    warm-start the next point of its chain from; :mod:`kegel.parallel` calls it in the workers.
+    ``cfd_runs`` and ``study_cfd`` are the CFD results a run reads once (:func:`_read_cfd_runs`,
+    :func:`kegel.outputs.study.read_study_cfd`)."""
     try:
         # the raceway contacts' inlet supply at this point (kegel.supply); a study's own
         # point has flooded contacts, each of its lubrications is solved with its supply
         op_friction, supply = _point_friction(scene, friction, op)
-        if cfd_runs is not None:
+        cfd = _cfd_point(scene, op, cfd_runs) if cfd_runs is not None else None
+        if cfd is not None:
             # the contact model owns the oil within the CFD's gap g: its rolling force is cut there
-            op_friction = dataclasses.replace(
-                op_friction, contact_film_limit_m=_cfd_point(scene, op, cfd_runs)[2].contact_film_limit_m)
+            op_friction = dataclasses.replace(op_friction, contact_film_limit_m=cfd[2].contact_film_limit_m)
         if fid.solution == "dynamic":
-            point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs)
+            point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs, cfd)
         else:
-            point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd_runs)
+            point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd)
         if uncertainty is not None:
             point["uncertainty"] = _point_band(scene, fid, op, op_friction, point, uncertainty)
         point["lubricant_supply"] = supply.as_dict()
         if scene.study is not None and point.get("solved", True):
-            point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model)
+            point["study_friction"] = _study_case_friction(scene, fid, op, friction, point, model, study_cfd or [])
     except (KegelSolverError, SimulationDiverged) as exc:
         # the run keeps the points that finished and goes on: this one is recorded as
         # failed with the solver's message (and never warm-starts the next point)
@@ -420,9 +424,10 @@ def _open_folder(scene: Scene, fid: Fidelity, out: Path, force: bool = False, un
     return folder, done
 
 
-def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data, cfd_runs):
+def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data, cfd=None):
     """One quasi-static operating point as its results record, and the state to warm-start the
-    next point from (a fresh one after a failed point)."""
+    next point from (a fresh one after a failed point). ``cfd``: with ``hydraulic = "cfd"``, the
+    point's CFD result, its file and its boundary (:func:`_cfd_point`)."""
     g = scene.geometry
     dist, fr = _quasi_static_point(scene, fid, op, friction, model=model, data=data)
     if not fr.converged:
@@ -439,7 +444,7 @@ def _quasi_static_record(scene: Scene, fid: Fidelity, op, friction, model, data,
     if fid.hydraulic == "cfd":
         # the CFD loss torque of this point (hydraulic power / shaft speed), as computed, and the
         # thin films the CFD leaves to analytic terms (the contact was cut at the CFD's gap)
-        cfd, cfd_file, bnd = _cfd_point(scene, op, cfd_runs)
+        cfd, cfd_file, bnd = cfd
         hyd_torque = math.copysign(bnd.hydraulic_Nm, op.speed_rad_s)
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "boundary": bnd.as_dict(),
@@ -597,16 +602,17 @@ def _point_friction(scene: Scene, friction, op, lubrication=None):
                                inlet_gap_ratio_outer=supply.inlet_gap_ratio_outer), supply
 
 
-def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dict[str, Any], model) -> dict[str, Any]:
+def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dict[str, Any], model,
+                         study_cfd: list[tuple[Path, dict[str, Any]]]) -> dict[str, Any]:
     """A study point's contact friction per lubrication, each with its raceway contacts' inlet
     supply: a lubrication whose contacts are flooded reuses the point's solution (flooded
     contacts), any other is solved again (quasi-static; a dynamic study keeps the point's
-    friction and says so in ``note``)."""
+    friction and says so in ``note``). With CFD results of the real rollers (``study_cfd``, read
+    once per run), also the contact cut at their gap for the CFD rows."""
     from ..coupling import cfd_loss_at
-    from ..outputs.study import case_name, read_study_cfd
+    from ..outputs.study import case_name
 
     out: dict[str, Any] = {}
-    study_cfd = read_study_cfd(scene) if "cfd" in scene.study.methods else []
     for lub in scene.study.cases:
         f_case, supply = _point_friction(scene, friction, op, lub)
         rec: dict[str, Any] = {"lubricant_supply": supply.as_dict()}
@@ -684,10 +690,12 @@ def choose_fidelity(scene: Scene) -> tuple["Fidelity", dict[str, Any]]:
 
 
 def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
-                   cfd_runs: list[tuple[Path, dict[str, Any]]] | None = None) -> dict[str, Any]:
+                   cfd_runs: list[tuple[Path, dict[str, Any]]] | None = None, cfd_point=None) -> dict[str, Any]:
     """One operating point with the dynamic simulation: steady-state means as the point's
     figures, the time series and VTK bodies in ``dynamic/point_NNN`` (resumable from its
-    checkpoint after an interrupt)."""
+    checkpoint after an interrupt). With ``hydraulic = "cfd"``: ``cfd_runs`` (the speed sweep the
+    flow-force laws are fitted over) and ``cfd_point`` (the point's result, file and boundary,
+    :func:`_cfd_point`)."""
     from ..coupling import flow_forces_from_cfd, flow_forces_from_correlation
     from ..solutions.dynamics import simulate, write_result
 
@@ -713,7 +721,7 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # the CFD result of this point: rollers and cage through the fitted force law, the oil's
         # torque on the inner ring and the shaft (turning with the prescribed speed) on top
         # (levels from this point's result, speed exponents fitted over the same CFD model's sweep)
-        cfd, cfd_file, bnd = _cfd_point(scene, op, cfd_runs)
+        cfd, cfd_file, bnd = cfd_point
         law = flow_forces_from_cfd(cfd, g, sweep=cfd_runs, source=str(cfd_file))
         elements.append(law.element())
     pdir = out / "dynamic" / f"point_{op.index:03d}"
