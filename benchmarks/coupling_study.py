@@ -76,9 +76,10 @@ def main(argv: list[str]) -> int:
                 path = Path(tmp) / f"{level}_{ff}.toml"
                 path.write_text(_scene_text(base, level=level, flow_forces=True, axial_load=args.axial_load,
                                             speed=args.speed, duration_ms=duration_ms, out=out, threads=args.threads))
-                lub = load_scene(path).lubrication
+                first = load_scene(path)  # the scene with the flow forces: its CFD point and boundary
+                lub = first.lubrication
                 cfd, f = find_cfd_result(REPO / "benchmarks" / "results" / "cfd", bearing="32208", lubricant="FVA3",
-                                         speed_rad_s=w, temperature_K=load_scene(path).operating_points[0].temperature_K,
+                                         speed_rad_s=w, temperature_K=first.operating_points[0].temperature_K,
                                          oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= b.outer_diameter_m,
                                          results=runs)
                 bnd = cfd_boundary(cfd, g.roller_mean_diameter_m, source=str(f))

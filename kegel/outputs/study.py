@@ -101,6 +101,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
         flooded = lub.oil_level_m >= D
         for m in st.methods:
             warns: list[Warning_] = []
+            cut_failed = False  # the CFD row's contact, cut at the gap, did not converge
             row: dict[str, Any] = {**base, "method": m, "error_rel": None, "note": ""}
             if m in ("liebrecht", "skf"):
                 h = hydraulic_torques(m, g, state, shaft_speed_rad_s=w, oil_level_m=lub.oil_level_m,
@@ -129,7 +130,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                         row.update(friction_torque_Nm=float(case["friction_cut_at_g_Nm"]),
                                    contact_film_limit_m=case.get("contact_film_limit_m"))
                         if case.get("friction_cut_at_g_converged") is False:
-                            row["cut_not_converged"] = True
+                            cut_failed = True
                             warns.append(Warning_("not_converged", f"the contact friction cut at the CFD's gap for "
                                                   f"{row['lubrication']} did not converge: the CFD row has no total"))
                     else:
@@ -159,8 +160,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                                           f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
                                           "read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")
-            row["total_torque_Nm"] = (None if hyd is None or row.pop("cut_not_converged", False)
-                                      else row["friction_torque_Nm"] + hyd)
+            row["total_torque_Nm"] = None if hyd is None or cut_failed else row["friction_torque_Nm"] + hyd
             row["warnings"] = [x.as_dict() for x in warns]
             rows.append(row)
     return rows
