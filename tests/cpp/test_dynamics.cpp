@@ -205,30 +205,38 @@ TEST(Dynamics, TheRightHandSideDoesNotAllocate) {
 
 // A contact temperature per ring (issue 27, item 6): the outer raceway's contacts take the outer
 // ring's lubricant state, the inner raceway's and the rib's the inner ring's.
+
+// The right-hand sides and outputs of the fixture's model (one state for all contacts) and of a
+// model with the outer and inner rings' states given, at the fixture's state.
+struct TwoModels {
+  std::vector<double> a, b;
+  kegel::DynamicOutputs o1, o2;
+};
+
+TwoModels rhs_with_ring_states(const Fixture& f, const kegel::ContactLubricantState& outer,
+                               const kegel::ContactLubricantState& inner) {
+  auto other = std::make_shared<kegel::DynamicModel>(f.bearing, values_32216(), f.fp, f.race, f.rib, outer, inner);
+  const int N = f.model->state_size();
+  kegel::DynamicData d1(*f.model), d2(*other);
+  TwoModels r{std::vector<double>(N), std::vector<double>(N), {}, {}};
+  EXPECT_EQ(kegel::dynamic_rhs(*f.model, d1, f.drive, 0.0, f.y0.data(), r.a.data(), &r.o1), 0);
+  EXPECT_EQ(kegel::dynamic_rhs(*other, d2, f.drive, 0.0, f.y0.data(), r.b.data(), &r.o2), 0);
+  return r;
+}
+
 TEST(RingTemperature, TwoEqualStatesGiveTheDynamicRightHandSideBitForBit) {
   Fixture f;
-  auto two = std::make_shared<kegel::DynamicModel>(f.bearing, values_32216(), f.fp, f.race, f.rib, f.state, f.state);
-  const int N = f.model->state_size();
-  kegel::DynamicData d1(*f.model), d2(*two);
-  std::vector<double> a(N), b(N);
-  kegel::DynamicOutputs o1, o2;
-  ASSERT_EQ(kegel::dynamic_rhs(*f.model, d1, f.drive, 0.0, f.y0.data(), a.data(), &o1), 0);
-  ASSERT_EQ(kegel::dynamic_rhs(*two, d2, f.drive, 0.0, f.y0.data(), b.data(), &o2), 0);
-  for (int i = 0; i < N; ++i) EXPECT_EQ(a[i], b[i]) << "component " << i;
-  EXPECT_EQ(o1.drive_torque_Nm, o2.drive_torque_Nm);
+  const TwoModels r = rhs_with_ring_states(f, f.state, f.state);
+  for (size_t i = 0; i < r.a.size(); ++i) EXPECT_EQ(r.a[i], r.b[i]) << "component " << i;
+  EXPECT_EQ(r.o1.drive_torque_Nm, r.o2.drive_torque_Nm);
 }
 
 TEST(RingTemperature, AWarmerInnerRingThinsOnlyTheInnerRingsFilmsInTheDynamicModel) {
   Fixture f;
   // inner ring 10 K above the oil (50 degC), outer ring at the oil's temperature
   const kegel::ContactLubricantState warm = kegel::make_contact_lubricant_state(f.lub, 333.15);
-  auto model = std::make_shared<kegel::DynamicModel>(f.bearing, values_32216(), f.fp, f.race, f.rib, f.state, warm);
-  const int N = f.model->state_size();
-  kegel::DynamicData d1(*f.model), d2(*model);
-  std::vector<double> a(N), b(N);
-  kegel::DynamicOutputs o1, o2;
-  ASSERT_EQ(kegel::dynamic_rhs(*f.model, d1, f.drive, 0.0, f.y0.data(), a.data(), &o1), 0);
-  ASSERT_EQ(kegel::dynamic_rhs(*model, d2, f.drive, 0.0, f.y0.data(), b.data(), &o2), 0);
+  const TwoModels r = rhs_with_ring_states(f, f.state, warm);
+  const kegel::DynamicOutputs &o1 = r.o1, &o2 = r.o2;
   using O = kegel::DynamicOutputs;
   // the same state: the outer raceway's contacts are unchanged, bit for bit
   for (int m = 0; m < 5; ++m) EXPECT_EQ(o1.power_W[O::kOuter][m], o2.power_W[O::kOuter][m]) << "mechanism " << m;
