@@ -379,12 +379,13 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   const double wc0 = out.cage_speed_pure_rolling_rad_s, wR0 = out.roller_spin_pure_rolling_rad_s[0];
   out.roller_spin_rad_s.assign(Z, wR0);
   int status = 0;
-  // roller j's spin that balances its spin moments when it orbits at w_c (unloaded: pure rolling)
-  auto spin_at = [&](int j, double w_c) {
+  // roller j's spin that balances its spin moments when it orbits at w_c (unloaded: pure
+  // rolling), with its pocket's friction when ``pocket``
+  auto spin_at = [&](int j, double w_c, bool pocket) {
     const Roller& r = rollers[j];
     const double w_pure = wR0 * w_c / wc0;
     if (r.points.empty()) return w_pure;
-    auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage).spin_moment; };
+    auto S = [&](double wr) { return eval(r, wr, w_c, w_i, lub_o, lub_i, fp, race, ribp, false, pocket).spin_moment; };
     const double tol = 1e-13 * std::abs(w_pure);
     double root = w_pure;
     // warm start from the previous slip of this roller
@@ -394,7 +395,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   auto spin_for_cage = [&](double w_c, std::vector<double>& spins) {
     double tangential = 0.0;
     for (int j = 0; j < Zc; ++j) {
-      spins[j] = spin_at(j, w_c);
+      spins[j] = spin_at(j, w_c, cage);
       if (!rollers[j].points.empty())
         tangential += weight * eval(rollers[j], spins[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, false, cage).axis_moment;
     }
@@ -528,15 +529,6 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     pocket_friction(r, wr, q_pocket, e);
     return e;
   };
-  // a locked roller's spin in balance at the cage speed, its pocket's friction included
-  auto spin_locked = [&](int j, double wc) {
-    const Roller& r = rollers[j];
-    const double w_pure = wR0 * wc / wc0;
-    auto S = [&](double wr) { return eval(r, wr, wc, w_i, lub_o, lub_i, fp, race, ribp, false, true).spin_moment; };
-    double root = w_pure;
-    if (!root_near(S, w_pure * d.spin_ratio_[j], w_pure, 0.1, 1e-13 * std::abs(w_pure), root)) status = 1;
-    return root;
-  };
   if (cage_model == CageModel::FreeRollers) {
     if (int(d.orbit_ratio_.size()) != Z) d.orbit_ratio_.assign(Z, NAN);
     if (int(d.free_spin_ratio_.size()) != Z) d.free_spin_ratio_.assign(Z, NAN);
@@ -628,7 +620,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       bool ok = std::isfinite(wo) && std::isfinite(wr) && newton(wo, wr);
       if (!ok) {
         wo = wc0;
-        wr = spin_at(j, wc0);
+        wr = spin_at(j, wc0, false);  // the free-roller model: no pocket forces
         ok = newton(wo, wr);
       }
       if (ok) {
@@ -661,7 +653,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     double M_locked = 0.0;
     for (int j = 0; j < Zc; ++j) {
       if (free[j] || rollers[j].points.empty()) continue;
-      spins[j] = spin_locked(j, w_c);
+      spins[j] = spin_at(j, w_c, true);  // its pocket's friction included
       M_locked += eval(rollers[j], spins[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, false, true).axis_moment;
     }
     const double q_new = M_locked / n_free;
@@ -677,7 +669,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         // unloaded rollers: with the cage, spinning in balance at its speed; locked ones were
         // solved with their pockets above
         orbit[j] = w_c;
-        if (rollers[j].points.empty()) spins[j] = spin_at(j, w_c);
+        if (rollers[j].points.empty()) spins[j] = spin_at(j, w_c, false);
       }
       for (int j = Zc; j < Z; ++j) {
         spins[j] = spins[0];
