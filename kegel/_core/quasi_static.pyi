@@ -80,6 +80,12 @@ class BearingModelValues:
     def roller_mass_kg(self, arg: float, /) -> None: ...
 
     @property
+    def cage_pocket_clearance_m(self) -> float: ...
+
+    @cage_pocket_clearance_m.setter
+    def cage_pocket_clearance_m(self, arg: float, /) -> None: ...
+
+    @property
     def E_reduced_Pa(self) -> float: ...
 
     @E_reduced_Pa.setter
@@ -253,6 +259,8 @@ class CageModel(enum.Enum):
     pocket = 1
 
     free_rollers = 2
+
+    walls = 3
 
 def evaluate_bearing_friction(model: BearingModel, data: BearingData, loads: BearingLoads, inner_speed_rad_s: float, lubricant_state: kegel._core.tribology.ContactLubricantState, friction: kegel._core.tribology.FrictionParameters, raceway: kegel._core.tribology.SurfacePair, rib: kegel._core.tribology.SurfacePair, rib_cells: int = 0, cage: CageModel = CageModel.free_rollers, outer_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None, inner_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None) -> dict:
     """

@@ -158,8 +158,9 @@ class Fidelity:
         Cells per side of the rib contact window (cell model).
     cage
         Whether the cage is modelled. Quasi-static: free rollers (each loaded roller at its own
-        orbital speed, the cage at their time-mean speed, no pocket forces), falling back to
-        the pocket model when the rollers' drift exceeds the pocket clearance; ``false``: the
+        orbital speed, the cage at their time-mean speed, no pocket forces) in pockets of the
+        bearing's clearance: where a roller's drift reaches a pocket wall, the wall holds it at
+        the cage's speed for that share of the revolution (``cage_model = "mixed"``); ``false``: the
         rollers at the cage speed without pocket forces. Dynamic: the cage as a body with its
         pocket contacts.
     solution

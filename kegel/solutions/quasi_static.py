@@ -53,6 +53,7 @@ def bearing_model(g: BearingGeometry, bearing: BearingData, material: MaterialDa
     v.roller_half_angle_rad = g.roller_half_angle_rad
     v.roller_length_m = g.roller_length_m
     v.roller_mass_kg = g.roller_mass_kg
+    v.cage_pocket_clearance_m = g.cage_pocket_clearance_circumferential_m
     v.E_reduced_Pa = _core.reduced_modulus_Pa(material.core, material.core)
     phi = g.rib_face_angle_to_radial_plane_rad
     x_p, r_p = g.rib_contact_point_m
@@ -271,11 +272,17 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         resultant, the cage at the rollers' time-mean orbital speed, no pocket forces;
         ``"pocket"`` - every roller orbits with the cage and its pocket takes its circumferential
         load, with Coulomb friction (Eq. 37); ``False`` / ``"off"`` - rollers at the cage speed,
-        no pocket forces. ``True`` (default): ``"free_rollers"`` while the rollers' drift in their
-        pockets over a revolution stays inside the circumferential pocket clearance, else
-        ``"pocket"`` where the drift exceeds it, blended with the free-roller solution by the
-        share of a revolution the rollers spend at their pocket walls (``"mixed"``, see
-        ``pocket_fraction``; the result's ``cage_model`` says which). The dynamic simulation supports
+        no pocket forces; ``"walls"`` - the free rollers in pockets of the bearing's
+        circumferential clearance: a roller runs free while its walk through its pocket (its
+        orbit against the cage's, accumulated round the revolution) stays inside the clearance,
+        and a wall holds it at the cage's speed, its spin braked by the wall's friction (Eq. 37),
+        for the share of each azimuth step it spends there; rollers without an orbit of their
+        own sit at a wall throughout; the cage turns where the walls' moments cancel.
+        ``True`` (default): ``"walls"``, reported as ``"free_rollers"`` when no roller meets a
+        wall, ``"pocket"`` when every loaded one is held throughout, else ``"mixed"`` with
+        ``pocket_fraction``, the rollers' share of time at a wall (continuous from the free
+        rollers to the pocket model as the clearance shrinks); a walls solution that fails the
+        gates falls back to ``"pocket"``. The dynamic simulation supports
         the free rollers under the seed paper's combined loads (they move +-6 um in +-170 um
         pockets); the pocket model there gave a 15 % higher torque.
     tilt_moment_Nm
@@ -328,9 +335,10 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     loads = _loads(axial_N, axial_offset_m, radial_N, tilt_moment_Nm, misalignment_rad)
     loads.tilt_free = tilt_moment_Nm != 0.0
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
-    modes = {True: "free_rollers", False: "off", "off": "off", "pocket": "pocket", "free_rollers": "free_rollers"}
+    modes = {True: "walls", False: "off", "off": "off", "pocket": "pocket", "free_rollers": "free_rollers",
+             "walls": "walls"}
     if not (isinstance(cage, (bool, str)) and cage in modes):
-        raise KegelInputError("<argument>", "cage", cage, "True, False, 'off', 'pocket' or 'free_rollers'")
+        raise KegelInputError("<argument>", "cage", cage, "True, False, 'off', 'pocket', 'free_rollers' or 'walls'")
     mode = modes[cage]
 
     def evaluate(mode: str, data) -> dict:
@@ -340,34 +348,17 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
 
     def solve(data) -> tuple[str, dict]:
         f = evaluate(mode, data)
-        m = mode
-        f["pocket_fraction"] = 1.0 if mode == "pocket" else 0.0
-        clearance = g.cage_pocket_clearance_circumferential_m
-        if cage is True and f["roller_drift_m"] > clearance:
-            # The free rollers would run into their pocket walls over part of a revolution.
-            # There the pockets carry them; elsewhere they run free. The share of the revolution
-            # spent at a pocket wall is about 1 - clearance / drift (0 where the drift just fills
-            # the clearance, 1 for a drift far beyond it), and the solution is the blend of the
-            # free-roller and the pocket solutions with that weight: continuous in torque where
-            # the model switches (Table 3 at 2000 rpm switched from 3.49 N m free at 10 kN to
-            # 3.51 N m pocket at 11 kN, where the free rollers give 3.41 N m; the dynamic
-            # simulation, whose cage is a body with pocket contacts, gives 3.42 N m at 11 kN,
-            # benchmarks/dynamic_vs_quasi_static.py). Both solutions pass the balances, so
-            # their blend does.
-            free = f
-            pocket = evaluate("pocket", data)
-            if plausibility_failures(free, inner_speed_rad_s, 0.0):
-                # no balanced free-roller solution (a lightly loaded roller touching the cup and
-                # the rib only finds no orbit of its own: Table 3 at 14 and 15 kN): the pockets
-                # carry every roller
-                pocket["pocket_fraction"] = 1.0
-                return "pocket", pocket
-            share = 1.0 - clearance / free["roller_drift_m"]
-            f = _blend(free, pocket, share)
-            f["roller_drift_m"] = free["roller_drift_m"]
-            f["pocket_fraction"] = share
-            m = "mixed"
-        return m, f
+        if mode != "walls":
+            return mode, f
+        # The rollers in their pockets: free where their walk through the pocket stays inside
+        # the clearance, held at a wall for the share of the revolution where it does not
+        # (CageModel.walls): "free_rollers" when no roller meets a wall, "pocket" when every
+        # loaded one is held throughout, else "mixed" with that share.
+        share = f["pocket_fraction"]
+        if plausibility_failures(f, inner_speed_rad_s, 0.0):
+            # no balanced solution with the walls: the pockets carry every roller
+            return "pocket", evaluate("pocket", data)
+        return ("free_rollers" if share == 0.0 else "pocket" if share == 1.0 else "mixed"), f
 
     # A warm start must never decide the answer: a warm solution whose load distribution fails
     # or whose result misses a gate is solved again from a fresh state (once).
@@ -442,19 +433,6 @@ def ring_lubricant_states(lubricant, temperature_K: float, inner_ring_temperatur
         lubricant_state(lubricant, v, source=source, key=name)  # the oil's formulas hold there
         out.append(_core.tribology.make_contact_lubricant_state(lubricant.core, v))
     return out[0], out[1]
-
-
-def _blend(a: Any, b: Any, t: float) -> Any:
-    """``(1 - t) a + t b`` for the numbers of two friction solutions (dicts recursively); lists
-    (per-roller speeds) from the solution with the larger weight; integers (status, counts) the
-    larger."""
-    if isinstance(a, dict):
-        return {k: _blend(a[k], b[k], t) if k in b else a[k] for k in a}
-    if isinstance(a, bool) or isinstance(a, int):
-        return max(a, b)
-    if isinstance(a, float):
-        return (1.0 - t) * a + t * b
-    return b if t >= 0.5 else a
 
 
 #: Tolerances of the plausibility gates every quasi-static point must pass to be called converged.

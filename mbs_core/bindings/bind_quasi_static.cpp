@@ -29,6 +29,7 @@ void bind_quasi_static(nb::module_& parent) {
       .def_rw("roller_half_angle_rad", &V::roller_half_angle_rad)
       .def_rw("roller_length_m", &V::roller_length_m)
       .def_rw("roller_mass_kg", &V::roller_mass_kg)
+      .def_rw("cage_pocket_clearance_m", &V::cage_pocket_clearance_m)
       .def_rw("E_reduced_Pa", &V::E_reduced_Pa)
       .def_rw("rib_apex_z_m", &V::rib_apex_z_m)
       .def_rw("rib_half_angle_rad", &V::rib_half_angle_rad)
@@ -86,7 +87,8 @@ void bind_quasi_static(nb::module_& parent) {
   nb::enum_<CageModel>(m, "CageModel")
       .value("off", CageModel::Off)
       .value("pocket", CageModel::Pocket)
-      .value("free_rollers", CageModel::FreeRollers);
+      .value("free_rollers", CageModel::FreeRollers)
+      .value("walls", CageModel::Walls);
   m.def(
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
@@ -97,7 +99,7 @@ void bind_quasi_static(nb::module_& parent) {
         const int status = evaluate_bearing_friction(model, data, loads, inner_speed, outer_lub ? *outer_lub : lub,
                                                      inner_lub ? *inner_lub : lub, fp, race, rib, f, rib_cells, cage);
         if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
-                                                    "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256");
+                                                    "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256 (cage = walls: a model with cage_pocket_clearance_m > 0)");
         nb::dict d;
         d["status"] = status;
         d["inner_speed_rad_s"] = f.inner_speed_rad_s;
@@ -115,6 +117,8 @@ void bind_quasi_static(nb::module_& parent) {
         d["power_dissipated_W"] = f.power_dissipated_W;
         d["cage_power_W"] = f.cage_power_W;
         d["cage_residual_Nm"] = f.cage_residual_Nm;
+        d["pocket_fraction"] = f.pocket_fraction;
+        d["roller_wall_share"] = f.roller_wall_share;
         put_friction_by_contact(d, f.power_W, f.Lambda_min, f.phi_max);
         return d;
       },

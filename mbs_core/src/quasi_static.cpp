@@ -43,6 +43,7 @@ const BearingModelValues& validated(const BearingModelValues& v) {
   require_nonnegative(o, "roller_half_angle_rad", v.roller_half_angle_rad);
   require_positive(o, "roller_length_m", v.roller_length_m);
   require_nonnegative(o, "roller_mass_kg", v.roller_mass_kg);
+  require_nonnegative(o, "cage_pocket_clearance_m", v.cage_pocket_clearance_m);
   require_positive(o, "E_reduced_Pa", v.E_reduced_Pa);
   require_finite(o, "rib_apex_z_m", v.rib_apex_z_m);
   require_range(o, "rib_half_angle_rad", v.rib_half_angle_rad, 0.5 * kPi, kPi);

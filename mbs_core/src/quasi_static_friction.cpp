@@ -139,6 +139,24 @@ Eval eval(const Roller& r, double w_R, double w_c, double w_i, const ContactLubr
   return e;
 }
 
+// (1 - t) a + t b of two evaluations (accumulated), the extremes of the film parameters of both
+Eval mix(const Eval& a, const Eval& b, double t) {
+  Eval e;
+  const double s = 1.0 - t;
+  e.spin_moment = s * a.spin_moment + t * b.spin_moment;
+  e.axis_moment = s * a.axis_moment + t * b.axis_moment;
+  e.pocket_N = s * a.pocket_N + t * b.pocket_N;
+  e.pocket_W = s * a.pocket_W + t * b.pocket_W;
+  e.torque_inner = s * a.torque_inner + t * b.torque_inner;
+  e.torque_outer = s * a.torque_outer + t * b.torque_outer;
+  for (int k = 0; k < 3; ++k) {
+    for (int q = 0; q < 5; ++q) e.P[k][q] = s * a.P[k][q] + t * b.P[k][q];
+    e.Lmin[k] = std::min(a.Lmin[k], b.Lmin[k]);
+    e.phimax[k] = std::max(a.phimax[k], b.phimax[k]);
+  }
+  return e;
+}
+
 // Brent's method on [a, b] with f(a) f(b) <= 0.
 template <class F>
 bool brent(F f, double a, double b, double fa, double fb, double tol, double& root) {
@@ -214,7 +232,9 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
                               const ContactLubricantState& lub_o, const ContactLubricantState& lub_i,
                               const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& ribp,
                               BearingFriction& out, int rib_cells, CageModel cage_model) noexcept {
-  const bool cage = cage_model == CageModel::Pocket;  // pocket forces and friction
+  bool cage = cage_model == CageModel::Pocket;  // pocket forces and friction (every roller)
+  const bool walls = cage_model == CageModel::Walls;
+  if (walls && !(m.values().cage_pocket_clearance_m > 0.0)) return -1;
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
   std::vector<double> rib_h0;
   const auto& v = m.values();
@@ -498,7 +518,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   // FreeRollers needs it only when no roller finds an orbit of its own (below): its own
   // solution does not depend on a common cage speed, and under a combined load the common cage
   // solve cost more than the free rollers (it often fell back to the nested root finding)
-  if (cage_model != CageModel::FreeRollers) solve_common_cage();
+  if (cage_model != CageModel::FreeRollers && !walls) solve_common_cage();
   // FreeRollers: each loaded roller's own orbital speed and spin (two balances, 2 x 2 Newton
   // with finite-difference derivatives, warm-started), then the cage at their time-mean speed
   std::vector<double> orbit(Z, w_c);
@@ -529,7 +549,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     pocket_friction(r, wr, q_pocket, e);
     return e;
   };
-  if (cage_model == CageModel::FreeRollers) {
+  // Walls: each roller's free state, its state held at a wall, and the share of its azimuth
+  // step it spends there
+  std::vector<double> wall_share(Z, 0.0), wall_spin(Z, 0.0), wall_A(Z, 0.0), free_orbit, free_spin;
+  bool walls_on = false;
+  out.pocket_fraction = cage ? 1.0 : 0.0;
+  if (cage_model == CageModel::FreeRollers || walls) {
     if (int(d.orbit_ratio_.size()) != Z) d.orbit_ratio_.assign(Z, NAN);
     if (int(d.free_spin_ratio_.size()) != Z) d.free_spin_ratio_.assign(Z, NAN);
     if (d.free_jacobian_.size() != 4 * size_t(Z)) d.free_jacobian_.assign(4 * size_t(Z), NAN);
@@ -648,6 +673,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       break;
     }
     w_c = n_free / inv;
+    if (walls) break;  // the walls, not equal shares, carry the locked rollers (below)
     // the locked rollers, driven through their pockets at the cage speed: the moment the cage
     // passes them, and the free rollers' share of it (next pass, until it no longer changes)
     double M_locked = 0.0;
@@ -686,15 +712,113 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         hi = std::max(hi, lead);
       }
       out.roller_drift_m = hi - lo;
+      // Walls: a walk that stays inside the clearance meets no wall (the free-roller solution)
+      if (walls && Zc == Z && (out.locked_rollers > 0 || out.roller_drift_m > v.cage_pocket_clearance_m)) {
+        // The walk of a roller through its pocket (total circumferential clearance c), once
+        // round in the direction of the cage's motion: over the azimuth step of roller j its lead
+        // grows by step (1 - w_c / orbit_j) while it runs free; where it reaches a wall
+        // (+-c / 2) the wall holds it at the cage's speed for the rest of the step. A locked
+        // roller sits at the wall its drag presses it against. The walk is periodic (the lead
+        // after one revolution equals the lead before), and the cage's speed is the one at which
+        // the walls' forces, weighted by their shares, have no net moment about the axis.
+        free_orbit = orbit;
+        free_spin = spins;
+        const double c_half = 0.5 * v.cage_pocket_clearance_m;
+        std::vector<double> lead(Z, 0.0);
+        auto hold = [&](int j, double wc) {  // roller j held at a wall at the cage speed wc
+          wall_spin[j] = spin_at(j, wc, true);
+          wall_A[j] = eval(rollers[j], wall_spin[j], wc, w_i, lub_o, lub_i, fp, race, ribp, false, true).axis_moment;
+        };
+        // one revolution of the walk from the lead x at the first azimuth (the end lead)
+        auto revolution = [&](double x, double wc, bool record) {
+          const double s = wc >= 0.0 ? 1.0 : -1.0;
+          for (int k = 0; k < Z; ++k) {
+            const int j = wc >= 0.0 ? k : (Z - k) % Z;
+            double th = 0.0;
+            if (rollers[j].points.empty()) {
+              // unloaded: coasts with the cage
+            } else if (!free[j]) {
+              x = (s * wall_A[j] >= 0.0 ? 1.0 : -1.0) * c_half;
+              th = 1.0;
+            } else {
+              const double dx = lead[j], xn = x + dx;
+              if (xn > c_half) {
+                th = 1.0 - (c_half - x) / dx;
+                x = c_half;
+              } else if (xn < -c_half) {
+                th = 1.0 - (-c_half - x) / dx;
+                x = -c_half;
+              } else {
+                x = xn;
+              }
+            }
+            if (record) wall_share[j] = th;
+          }
+          return x;
+        };
+        // the net wall moment on the cage at the cage speed wc, the walk periodic: the
+        // revolution map T is non-decreasing with slope 0 or 1, so T(x) - x is non-increasing,
+        // >= 0 at -c/2 and <= 0 at +c/2: bisection finds its fixed point
+        auto net_wall_moment = [&](double wc) {
+          for (int j = 0; j < Z; ++j) {
+            lead[j] = 0.0;
+            if (rollers[j].points.empty()) continue;
+            if (free[j]) lead[j] = step * (1.0 - wc / free_orbit[j]);
+            else hold(j, wc);
+          }
+          double lo = -c_half, hi = c_half;
+          for (int it = 0; it < 64; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            if (revolution(mid, wc, false) - mid > 0.0) lo = mid; else hi = mid;
+          }
+          revolution(0.5 * (lo + hi), wc, true);
+          double sum = 0.0;
+          for (int j = 0; j < Z; ++j) {
+            if (!(wall_share[j] > 0.0)) continue;
+            if (free[j]) hold(j, wc);
+            sum += wall_share[j] * wall_A[j];
+          }
+          return sum;
+        };
+        // from the free rollers' time-mean speed, where a walk inside the clearance meets no wall
+        const double w_h = w_c;
+        double root = w_h;
+        if (net_wall_moment(w_h) != 0.0 &&
+            !root_near(net_wall_moment, wc0 * d.cage_ratio_, w_h, 1e-3, 1e-13 * std::abs(wc0), root))
+          status = 1;
+        w_c = root;
+        cage_residual = net_wall_moment(w_c);
+        walls_on = true;
+        double share = 0.0;
+        for (int j = 0; j < Z; ++j) {
+          const double th = wall_share[j];
+          share += th;
+          if (rollers[j].points.empty()) {
+            orbit[j] = w_c;
+            spins[j] = spin_at(j, w_c, false);
+          } else {
+            // time-mean speeds over the step
+            orbit[j] = (1.0 - th) * free_orbit[j] + th * w_c;
+            spins[j] = (1.0 - th) * free_spin[j] + th * wall_spin[j];
+          }
+        }
+        out.pocket_fraction = share / Z;
+      }
     } else {
       // no roller orbits on its own (every loaded one locked): all at the common cage speed
+      // (Walls: every one at its pocket wall, the pocket model)
+      if (walls) {
+        cage = true;
+        out.pocket_fraction = 1.0;
+      }
       solve_common_cage();
       std::fill(orbit.begin(), orbit.end(), w_c);
     }
     // the cage balance residual is zero by construction (no pocket forces)
-    cage_residual = 0.0;
+    if (!walls_on) cage_residual = 0.0;
   }
   out.roller_orbit_rad_s = orbit;
+  out.roller_wall_share = wall_share;
   out.cage_residual_Nm = cage_residual;
   out.cage_speed_rad_s = w_c;
   out.roller_spin_rad_s = spins;
@@ -716,7 +840,18 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
     // pocket forces: every roller in the pocket model; in the free-roller model the locked
     // rollers (driven by the cage) and, when there are such, the free ones' shares
     const bool locked = free_model && cage_drives_locked && !free[j] && !rollers[j].points.empty();
-    Eval ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage || locked);
+    Eval ev;
+    if (walls_on) {
+      // Walls: the free state and the state held at a wall, weighted by the wall's share
+      const double th = wall_share[j];
+      if (th < 1.0) ev = eval(rollers[j], free_spin[j], free_orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, false);
+      if (th > 0.0) {
+        const Eval ew = eval(rollers[j], wall_spin[j], w_c, w_i, lub_o, lub_i, fp, race, ribp, true, true);
+        ev = th < 1.0 ? mix(ev, ew, th) : ew;
+      }
+    } else {
+      ev = eval(rollers[j], spins[j], orbit[j], w_i, lub_o, lub_i, fp, race, ribp, true, cage || locked);
+    }
     if (free_model && free[j]) {
       pocket_friction(rollers[j], spins[j], q_pocket, ev);
       // the pocket's moment on a free roller does work at the roller's orbital speed, its

@@ -42,6 +42,7 @@ struct BearingModelValues {
   double roller_half_angle_rad = 0.0; ///< gamma
   double roller_length_m = 0.0;
   double roller_mass_kg = 0.0;
+  double cage_pocket_clearance_m = 0.0;  ///< circumferential, total (both sides); CageModel::Walls
   RollerProfile::Values profile;
   double E_reduced_Pa = 0.0;
   // rib
@@ -137,11 +138,21 @@ struct RollerState {
 ///    travelling once round (the harmonic mean over the azimuths; unloaded rollers coast with
 ///    the cage). The rollers then drift back and forth in their pockets by
 ///    BearingFriction::roller_drift_m, which must stay inside the pocket clearance for the model
-///    to hold (kegel.quasi_static checks it and falls back to Pocket). The dynamic simulation
+///    to hold (else Walls). The dynamic simulation
 ///    (issue 6) shows this regime under the seed paper's combined loads: the rollers move
 ///    +-6 um in +-170 um pockets and never touch the cage. A loaded roller whose two balances
 ///    cannot be solved (e.g. one raceway contact only) keeps the cage speed without a pocket force.
-enum class CageModel { Off = 0, Pocket = 1, FreeRollers = 2 };
+///  - Walls: the free rollers in pockets of the model's circumferential clearance. Each roller,
+///    travelling once round, walks through its pocket by the difference of its own orbit and
+///    the cage's; where its accumulated lead reaches a wall, the wall holds it at the cage's
+///    speed (its spin balanced with the pocket's friction, Eq. 37) for the share of the azimuth
+///    step it spends there, and it runs free elsewhere. Loaded rollers without an orbit of their
+///    own sit at a wall throughout. The cage turns at the speed at which the wall forces have no
+///    net moment about the axis (periodic walk: the lead after a revolution equals the lead
+///    before it). Free rollers whose drift stays inside the clearance never touch a wall: then it
+///    is FreeRollers without locked rollers. Continuous in the loads: a wall's share grows from
+///    zero as the drift reaches the clearance.
+enum class CageModel { Off = 0, Pocket = 1, FreeRollers = 2, Walls = 3 };
 
 struct BearingFriction;
 
@@ -219,6 +230,10 @@ struct BearingFriction {
   double Lambda_min[3] = {0, 0, 0};
   double phi_max[3] = {0, 0, 0};
   double cage_residual_Nm = 0.0;      ///< net moment of the rollers on the cage about the axis
+  /// Walls: the share of the rollers' time spent at a pocket wall (0: all free; 1: all held);
+  /// Pocket: 1; else 0
+  double pocket_fraction = 0.0;
+  std::vector<double> roller_wall_share;  ///< Walls: the share of each azimuth step spent at a wall
 };
 
 /// Evaluate the friction at the load distribution in data (solve_load_distribution first).
