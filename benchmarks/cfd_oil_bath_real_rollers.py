@@ -15,9 +15,11 @@ JSON keeps one row per speed.)
 
 The three totals, as in the flooded table (benchmarks/cfd_three_answers.py): contact cut at g +
 CFD + thin films, uncut contact + Liebrecht, uncut contact + SKF drag; the contacts' supply is the
-shaft-centre one (kegel.supply). `kegel cfd run` does not evaluate the thin films for an oil bath
-(they assume full films); the table gives the range from none to the flooded point's thin films
-(86.4 mN m at 2000 rpm: the roller end / rib film 72.5, the pockets 14.0), an upper bound. One cell across a gap
+shaft-centre one (kegel.supply). The thin films of the oil bath are the flooded
+point's, each times its film's supply factor (full under the oil surface, SKF's kinematic
+replenishment above it: the raceway contacts' supply model; ``kegel cfd run`` writes them, and
+``kegel cfd thin-films CASE`` evaluates them again for a case run before); the table gives the
+all-full value beside them. One cell across a gap
 reads the wedge low: the flooded whole bearing with one cell across each gap gave 74.0 mN m
 against the 3-cell sector's 84.0 (the gap study's --check-sector run, docs/cfd.md), a factor 1.135
 that the table applies beside the raw CFD (an estimate: the oil bath's wall-size mesh has one to
@@ -63,14 +65,21 @@ def main(argv: list[str] | None = None) -> int:
     cfd = float(data["loss_torque_at_shaft_Nm"])
     flooded = json.loads((REPO / "benchmarks" / "results" / "cfd" / f"32208_{rpm:g}rpm_flooded_50C_tiny_g0.08_n3_sector"
                           / "results.json").read_text())
-    thin = float(flooded["thin_film_loss_Nm"])  # the upper bound: full films
+    thin_full = float(flooded["thin_film_loss_Nm"])  # full films
+    if data.get("thin_film_loss_Nm") is None:
+        raise SystemExit(f"{CASE}/results.json has no oil-bath thin films: evaluate them with "
+                         f"kegel cfd thin-films {CASE.relative_to(REPO)}")
+    thin = float(data["thin_film_loss_Nm"])  # the oil bath's: each film times its supply factor
     row = {"speed_rpm": rpm, "case": str(CASE.relative_to(REPO)), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
            "runtime_s": data["runtime_s"], "simulated_time_s": data.get("simulated_time_s"),
            "stopped_by": data.get("stopped_by"), "steady": data.get("steady"),
            "angular_momentum_balance": (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque"),
            "cfd_loss_Nm": cfd, "cfd_loss_one_cell_corrected_Nm": cfd * ONE_CELL_FACTOR, "thin_films_Nm": thin,
+           "thin_films_full_Nm": thin_full, "thin_film_supply": data["thin_films"].get("supply"),
            **cc}
-    row["thin_films_note"] = "not evaluated for the oil bath; the flooded point's thin films as the upper bound"
+    row["thin_films_note"] = ("the flooded point's thin films, each times its supply factor (full under the oil "
+                              "surface, SKF's kinematic replenishment above it: kegel.cfd_cases.thin_films."
+                              "oil_bath_film_factors); thin_films_full_Nm: all films full")
     row["contact_plus_cfd_Nm"] = cc["contact_cut_at_g_Nm"] + cfd
     row["contact_plus_cfd_plus_thin_films_Nm"] = cc["contact_cut_at_g_Nm"] + cfd + thin
     row["corrected_total_Nm"] = cc["contact_cut_at_g_Nm"] + cfd * ONE_CELL_FACTOR + thin
@@ -83,12 +92,12 @@ def main(argv: list[str] | None = None) -> int:
                             "point": "32208, FVA 3, 50 degC, Fa = 1 kN, oil to the shaft centre",
                             "one_cell_factor": ONE_CELL_FACTOR, "rows": rows, "provenance": provenance()})
     m = {k: 1e3 * v for k, v in row.items() if isinstance(v, float) and k.endswith("_Nm")}
-    print("| contact cut at g | CFD (x 1.135 for one cell) | thin films (upper bound) | **contact + CFD (+ thin "
-          "films)** | contact (uncut) | Liebrecht | **contact + Liebrecht** | SKF drag | **contact + SKF** |")
+    print("| contact cut at g | CFD (x 1.135 for one cell) | thin films (all full) | **contact + CFD + thin "
+          "films** (CFD x 1.135) | contact (uncut) | Liebrecht | **contact + Liebrecht** | SKF drag | **contact + SKF** |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     print(f"| {m['contact_cut_at_g_Nm']:.1f} | {m['cfd_loss_Nm']:.1f} ({m['cfd_loss_one_cell_corrected_Nm']:.1f}) | "
-          f"0 - {m['thin_films_Nm']:.1f} | **{m['contact_plus_cfd_Nm']:.1f} - "
-          f"{m['contact_plus_cfd_plus_thin_films_Nm']:.1f}** (corrected: up to {m['corrected_total_Nm']:.1f}) | "
+          f"{m['thin_films_Nm']:.1f} ({m['thin_films_full_Nm']:.1f}) | "
+          f"**{m['contact_plus_cfd_plus_thin_films_Nm']:.1f}** ({m['corrected_total_Nm']:.1f}) | "
           f"{m['contact_uncut_Nm']:.1f} | {m['liebrecht_Nm']:.1f} | "
           f"**{m['contact_plus_liebrecht_Nm']:.1f}** | {m['skf_drag_Nm']:.1f} | **{m['contact_plus_skf_Nm']:.1f}** |")
     print(f"\nCFD: {row['cells']} cells, {row['runtime_s'] / 60:.0f} min, stopped by {row['stopped_by']}, "

@@ -337,6 +337,22 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_thin_films(args: argparse.Namespace) -> int:
+    from .run import refresh_thin_films
+
+    for case in args.case:
+        data = refresh_thin_films(case)
+        t = data["thin_films"]
+        sup = t.get("supply")
+        how = ("flooded: full films" if sup is None else
+               f"oil bath: rib x {sup['rib']:.3f}, pockets x {sup['pockets']:.3f} (immersed {sup['immersed_rib']:.2f}, "
+               f"phi_rs {sup['phi_rs']:.3f})")
+        print(f"{case}: thin films {1e3 * data['thin_film_loss_Nm']:.2f} mN m ({how}); CFD "
+              f"{1e3 * data['loss_torque_at_shaft_Nm']:.2f} mN m; together "
+              f"{1e3 * data['loss_torque_at_shaft_with_thin_films_Nm']:.2f} mN m")
+    return 0
+
+
 def _cmd_check_solvers(args: argparse.Namespace) -> int:
     from .checks import rotation_check
     from .foam import SOLVERS
@@ -511,6 +527,11 @@ def add_cfd_parser(sub, common) -> None:
                    help="run each case as one task on a Dask cluster: its scheduler's address or scheduler file "
                         "(workers started with --resources \"cores=N\" run a case only where --np cores are free)")
     s.set_defaults(func=_cmd_sweep)
+    t = csub.add_parser("thin-films", help="evaluate the thin-film terms of finished cases again (after a change of "
+                                           "the thin-film model) and rewrite their results.json; the CFD's figures stay")
+    t.add_argument("case", nargs="+", help="case folder of a finished kegel cfd run")
+    common(t)
+    t.set_defaults(func=_cmd_thin_films)
     c = csub.add_parser("check-solvers", help="rotation check of the rebuilt OpenFOAM solvers")
     c.add_argument("--stock", action="store_true", help="also check Debian's binaries (interFoam fails)")
     common(c)

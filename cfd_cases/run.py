@@ -858,14 +858,40 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     return result
 
 
+def refresh_thin_films(case_dir: str | Path) -> dict[str, Any]:
+    """Evaluate the thin-film terms of a finished case again (after a change of the thin-film
+    model) and rewrite its ``results.json``; the CFD's own figures are left as they are.
+
+    Raises
+    ------
+    FoamError
+        ``case_dir`` holds no finished ``kegel cfd run`` case (``kegel-case.json`` and
+        ``results.json``).
+    """
+    from kegel.base.io import atomic_write_json
+
+    case = Path(case_dir)
+    meta_path, res_path = case / "kegel-case.json", case / "results.json"
+    if not (meta_path.is_file() and res_path.is_file()):
+        raise FoamError(f"{case}: expected a finished kegel cfd case (kegel-case.json and results.json)")
+    meta = json.loads(meta_path.read_text())
+    data = json.loads(res_path.read_text())
+    names = {f.name for f in fields(CfdPoint)}
+    raw = {k: v for k, v in meta.get("point", {}).items() if k in names}
+    point = CfdPoint(**{k: tuple(v) if isinstance(v, list) else v for k, v in raw.items()})
+    thin = thin_film_json(point, meta)
+    data["thin_film_loss_Nm"] = thin["loss_torque_Nm"]
+    data["thin_films"] = thin
+    data["loss_torque_at_shaft_with_thin_films_Nm"] = data["loss_torque_at_shaft_Nm"] + thin["loss_torque_Nm"]
+    atomic_write_json(res_path, data)
+    return data
+
+
 def thin_film_json(point: CfdPoint, meta: dict[str, Any]) -> dict[str, Any]:
     """The analytic terms of the films thinner than the CFD's clearance ``c`` (roller end / rib,
-    cage pockets; :func:`kegel.cfd_cases.thin_films.thin_film_losses`) for ``results.json``.
-    Flooded points only: the terms assume full films; an oil bath gets ``loss_torque_Nm: None``
-    and the reason."""
-    if not point.flooded:
-        return {"loss_torque_Nm": None, "not_evaluated": "oil bath: the thin-film terms assume full films "
-                                                         "(flooded points only)"}
+    cage pockets; :func:`kegel.cfd_cases.thin_films.thin_film_losses`) for ``results.json``. An
+    oil bath's terms are the full films' times each film's supply factor
+    (:func:`kegel.cfd_cases.thin_films.oil_bath_film_factors`, written as ``supply``)."""
     from .thin_films import thin_film_losses
 
     bearing, g, _ = _load(point)
@@ -874,7 +900,8 @@ def thin_film_json(point: CfdPoint, meta: dict[str, Any]) -> dict[str, Any]:
         c = cfd_geometry(g, housing_clearance_m=point.housing_clearance_m, gap_ratio=point.gap_ratio,
                          clearance_ratio=point.clearance_ratio).clearance_m
     return thin_film_losses(g, bearing, lubricant=point.lubricant, temperature_K=point.temperature_K,
-                            inner_speed_rad_s=abs(point.speed_rad_s), clearance_m=float(c), material=point.material)
+                            inner_speed_rad_s=abs(point.speed_rad_s), clearance_m=float(c), material=point.material,
+                            oil_level_m=None if point.flooded else point.oil_level_m)
 
 
 def last_write_at_or_before(times: list[Path], t_s: float) -> Path | None:

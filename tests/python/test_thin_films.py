@@ -233,9 +233,75 @@ def test_results_json_terms_of_a_cfd_point(bg):
     json.loads(json.dumps(thin, allow_nan=False))          # strict JSON
     # without the clearance in the case's metadata: the point's geometry (c = 0.08 D_w = 0.8 mm)
     assert thin_film_json(point, {})["loss_torque_Nm"] == pytest.approx(thin["loss_torque_Nm"], rel=1e-12)
-    bath = CfdPoint(bearing="32208", speed_rad_s=W_2000, temperature_K=323.15, oil_level_m=0.02)
+    # an oil bath: each film's term times its supply factor (test_oil_bath_film_factors_by_hand)
+    bath = CfdPoint(bearing="32208", speed_rad_s=W_2000, temperature_K=323.15, oil_level_m=0.04)
     out = thin_film_json(bath, meta)
-    assert out["loss_torque_Nm"] is None and "flooded" in out["not_evaluated"]
+    sup = out["supply"]
+    assert thin["supply"] is None and 0.9 < sup["rib"] < 1.0
+    assert out["parts_Nm"]["rib"] == pytest.approx(sup["rib"] * thin["parts_Nm"]["rib"], rel=1e-12)
+    assert out["parts_Nm"]["pocket_sides"] == pytest.approx(sup["pockets"] * thin["parts_Nm"]["pocket_sides"], rel=1e-12)
+    assert out["loss_torque_Nm"] == pytest.approx(sum(out["parts_Nm"].values()), rel=1e-12)
+    json.loads(json.dumps(out, allow_nan=False))
+
+
+def test_oil_bath_film_factors_by_hand(bg):
+    """The thin films' supply in an oil bath: full under the oil surface, SKF's kinematic
+    replenishment factor above it (the raceway contacts' model). By hand for the 32208 (d = 40,
+    D = 80 mm), FVA 3 at 50 degC (nu from the lubricant data), 2000 rpm: phi_rs = exp(-3e-8 nu n
+    (d + D) sqrt(6 / (2 (D - d)))); oil to the shaft centre immerses half of every orbit."""
+    from kegel.cfd_cases.thin_films import oil_bath_film_factors
+    from kegel.model.lubricant import lubricant_state
+
+    b, g = bg
+    nu = lubricant_state("FVA3", 323.15).kinematic_viscosity_m2_s
+    phi = math.exp(-3e-8 * (nu * 1e6) * 2000.0 * (40.0 + 80.0) * math.sqrt(6.0 / (2.0 * 40.0)))
+    f = oil_bath_film_factors(g, b, oil_level_m=0.5 * b.outer_diameter_m, inner_speed_rad_s=W_2000,
+                              kinematic_viscosity_m2_s=nu)
+    assert f["phi_rs"] == pytest.approx(phi, rel=1e-12)
+    assert f["immersed_rib"] == pytest.approx(0.5, abs=1e-12) and f["immersed_pockets"] == pytest.approx(0.5, abs=1e-12)
+    assert f["rib"] == pytest.approx(0.5 + 0.5 * phi, rel=1e-12)
+    # submerged: full films; no bath: phi_rs alone; faster: less oil above the surface
+    full = oil_bath_film_factors(g, b, oil_level_m=b.outer_diameter_m, inner_speed_rad_s=W_2000,
+                                 kinematic_viscosity_m2_s=nu)
+    assert full["rib"] == 1.0 and full["pockets"] == 1.0
+    dry = oil_bath_film_factors(g, b, oil_level_m=0.0, inner_speed_rad_s=W_2000, kinematic_viscosity_m2_s=nu)
+    assert dry["rib"] == pytest.approx(phi, rel=1e-12)
+    fast = oil_bath_film_factors(g, b, oil_level_m=0.04, inner_speed_rad_s=2 * W_2000, kinematic_viscosity_m2_s=nu)
+    assert fast["rib"] < f["rib"]
+
+
+def test_thin_films_of_a_finished_case_are_evaluated_again(tmp_path, bg):
+    """``kegel cfd thin-films CASE`` rewrites a finished case's thin films (an oil-bath case run
+    before they were evaluated) and leaves the CFD's figures alone; a folder that is not a
+    finished case is refused."""
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    from kegel.cfd_cases.run import CfdPoint, thin_film_json
+
+    b, g = bg
+    point = CfdPoint(bearing="32208", speed_rad_s=W_2000, temperature_K=323.15, oil_level_m=0.04, gap_ratio=0.08)
+    from dataclasses import asdict
+
+    case = tmp_path / "case"
+    case.mkdir()
+    (case / "kegel-case.json").write_text(json.dumps({"point": asdict(point), "geometry": {"clearance_m": 0.0008}}))
+    old = {"point": asdict(point), "loss_torque_at_shaft_Nm": 0.0273, "thin_film_loss_Nm": None,
+           "thin_films": {"loss_torque_Nm": None}, "loss_torque_at_shaft_with_thin_films_Nm": None}
+    (case / "results.json").write_text(json.dumps(old))
+    exe = Path(sys.executable).with_name("kegel")
+    res = subprocess.run([str(exe), "cfd", "thin-films", str(case)], capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    new = json.loads((case / "results.json").read_text())
+    want = thin_film_json(point, {"geometry": {"clearance_m": 0.0008}})["loss_torque_Nm"]
+    assert new["thin_film_loss_Nm"] == pytest.approx(want, rel=1e-12)
+    assert new["loss_torque_at_shaft_Nm"] == 0.0273
+    assert new["loss_torque_at_shaft_with_thin_films_Nm"] == pytest.approx(0.0273 + want, rel=1e-12)
+    assert "oil bath" in res.stdout
+    res = subprocess.run([str(exe), "cfd", "thin-films", str(tmp_path)], capture_output=True, text=True)
+    assert res.returncode != 0 and "kegel-case.json" in res.stderr
 
 
 def test_reynolds_solver_against_the_inclined_slider_by_hand():
