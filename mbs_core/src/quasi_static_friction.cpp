@@ -783,9 +783,12 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         // from the free rollers' time-mean speed, where a walk inside the clearance meets no wall
         const double w_h = w_c;
         double root = w_h;
-        if (net_wall_moment(w_h) != 0.0 &&
-            !root_near(net_wall_moment, wc0 * d.cage_ratio_, w_h, 1e-3, 1e-13 * std::abs(wc0), root))
-          status = 1;
+        // a roller balance that fails at a trial cage speed of the search (far from the root)
+        // does not make the point fail; the balances at the root decide (below)
+        const int status_before = status;
+        const bool found = net_wall_moment(w_h) == 0.0 ||
+                           root_near(net_wall_moment, wc0 * d.cage_ratio_, w_h, 1e-3, 1e-13 * std::abs(wc0), root);
+        status = found ? status_before : 1;
         w_c = root;
         cage_residual = net_wall_moment(w_c);
         walls_on = true;
