@@ -219,7 +219,46 @@ bool root_near(F f, double guess, double x0, double rel, double tol, double& roo
   return brent(f, lo, hi, flo, fhi, tol, root);
 }
 
+// one revolution of the walk from the lead x (the end lead); the shares when asked
+double pocket_walk_revolution(const double* lead, const int* state, int n, double c, double x, double* share) {
+  for (int k = 0; k < n; ++k) {
+    double th = 0.0;
+    if (state[k] == 2) {
+      // unloaded: coasts with the cage
+    } else if (state[k] == 1 || state[k] == -1) {
+      x = state[k] * c;
+      th = 1.0;
+    } else {
+      const double dx = lead[k], xn = x + dx;
+      if (xn > c) {
+        th = 1.0 - (c - x) / dx;
+        x = c;
+      } else if (xn < -c) {
+        th = 1.0 - (-c - x) / dx;
+        x = -c;
+      } else {
+        x = xn;
+      }
+    }
+    if (share) share[k] = th;
+  }
+  return x;
+}
+
 }  // namespace
+
+double periodic_pocket_walk(const double* lead, const int* state, int n, double half_clearance,
+                            double* share) noexcept {
+  const double c = half_clearance;
+  double lo = -c, hi = c;
+  for (int it = 0; it < 64; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (pocket_walk_revolution(lead, state, n, c, mid, nullptr) - mid > 0.0) lo = mid; else hi = mid;
+  }
+  const double x0 = 0.5 * (lo + hi);
+  pocket_walk_revolution(lead, state, n, c, x0, share);
+  return x0;
+}
 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub, const FrictionParameters& fp,
@@ -724,56 +763,34 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         free_orbit = orbit;
         free_spin = spins;
         const double c_half = 0.5 * v.cage_pocket_clearance_m;
-        std::vector<double> lead(Z, 0.0);
+        // in the order of travel (the direction of the cage's motion)
+        std::vector<double> lead(Z, 0.0), share_k(Z, 0.0);
+        std::vector<int> state(Z, 0);
         auto hold = [&](int j, double wc) {  // roller j held at a wall at the cage speed wc
           wall_spin[j] = spin_at(j, wc, true);
           wall_A[j] = eval(rollers[j], wall_spin[j], wc, w_i, lub_o, lub_i, fp, race, ribp, false, true).axis_moment;
         };
-        // one revolution of the walk from the lead x at the first azimuth (the end lead)
-        auto revolution = [&](double x, double wc, bool record) {
+        // the net wall moment on the cage at the cage speed wc, the walk periodic
+        auto net_wall_moment = [&](double wc) {
           const double s = wc >= 0.0 ? 1.0 : -1.0;
           for (int k = 0; k < Z; ++k) {
             const int j = wc >= 0.0 ? k : (Z - k) % Z;
-            double th = 0.0;
+            lead[k] = 0.0;
             if (rollers[j].points.empty()) {
-              // unloaded: coasts with the cage
-            } else if (!free[j]) {
-              x = (s * wall_A[j] >= 0.0 ? 1.0 : -1.0) * c_half;
-              th = 1.0;
+              state[k] = 2;
+            } else if (free[j]) {
+              state[k] = 0;
+              lead[k] = step * (1.0 - wc / free_orbit[j]);
             } else {
-              const double dx = lead[j], xn = x + dx;
-              if (xn > c_half) {
-                th = 1.0 - (c_half - x) / dx;
-                x = c_half;
-              } else if (xn < -c_half) {
-                th = 1.0 - (-c_half - x) / dx;
-                x = -c_half;
-              } else {
-                x = xn;
-              }
+              hold(j, wc);  // locked: at the wall its drag presses it against
+              state[k] = s * wall_A[j] >= 0.0 ? 1 : -1;
             }
-            if (record) wall_share[j] = th;
           }
-          return x;
-        };
-        // the net wall moment on the cage at the cage speed wc, the walk periodic: the
-        // revolution map T is non-decreasing with slope 0 or 1, so T(x) - x is non-increasing,
-        // >= 0 at -c/2 and <= 0 at +c/2: bisection finds its fixed point
-        auto net_wall_moment = [&](double wc) {
-          for (int j = 0; j < Z; ++j) {
-            lead[j] = 0.0;
-            if (rollers[j].points.empty()) continue;
-            if (free[j]) lead[j] = step * (1.0 - wc / free_orbit[j]);
-            else hold(j, wc);
-          }
-          double lo = -c_half, hi = c_half;
-          for (int it = 0; it < 64; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if (revolution(mid, wc, false) - mid > 0.0) lo = mid; else hi = mid;
-          }
-          revolution(0.5 * (lo + hi), wc, true);
+          periodic_pocket_walk(lead.data(), state.data(), Z, c_half, share_k.data());
           double sum = 0.0;
-          for (int j = 0; j < Z; ++j) {
+          for (int k = 0; k < Z; ++k) {
+            const int j = wc >= 0.0 ? k : (Z - k) % Z;
+            wall_share[j] = share_k[k];
             if (!(wall_share[j] > 0.0)) continue;
             if (free[j]) hold(j, wc);
             sum += wall_share[j] * wall_A[j];

@@ -156,6 +156,19 @@ enum class CageModel { Off = 0, Pocket = 1, FreeRollers = 2, Walls = 3 };
 
 struct BearingFriction;
 
+/// The periodic walk of a roller through its cage pocket over one revolution (CageModel::Walls),
+/// in the order of travel. Over step k a free roller's lead over its pocket grows by lead[k]
+/// until it reaches a wall at +-half_clearance, where the wall holds it for the rest of the
+/// step; state[k] = 0 a free roller, +1 / -1 a roller held at the front / back wall throughout
+/// (no orbit of its own), 2 an unloaded roller (coasts with the cage: no lead). The walk is
+/// periodic: it starts each revolution at the lead it ended the last with. The revolution map is
+/// non-decreasing with slope 0 or 1, so the fixed point is found by bisection; where the walk
+/// stays inside the clearance (no wall met) every lead in a band is one, and the shares are 0.
+/// Writes share[k], the share of step k spent at a wall, and returns the lead at the start.
+/// n >= 1, half_clearance > 0; no allocation.
+double periodic_pocket_walk(const double* lead, const int* state, int n, double half_clearance,
+                            double* share) noexcept;
+
 /// State and workspace (warm start: the previous solution).
 class BearingData {
  public:
