@@ -346,7 +346,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                                            race, rib, rib_cells, getattr(Q.CageModel, mode),
                                            outer_lubricant_state=ring_states[1], inner_lubricant_state=ring_states[0])
 
-    def solve(data) -> tuple[str, dict]:
+    def solve(data, start: str) -> tuple[str, dict]:
         f = evaluate(mode, data)
         if mode != "walls":
             return mode, f
@@ -355,8 +355,10 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         # (CageModel.walls): "free_rollers" when no roller meets a wall, "pocket" when every
         # loaded one is held throughout, else "mixed" with that share.
         share = f["pocket_fraction"]
-        if plausibility_failures(f, inner_speed_rad_s, 0.0):
-            # no balanced solution with the walls: the pockets carry every roller
+        if plausibility_failures(f, inner_speed_rad_s, 0.0) and start == "cold":
+            # no balanced solution with the walls even from a fresh state: the pockets carry
+            # every roller (a warm start's failure is returned as it is, so that the point is
+            # solved again cold: a warm start must never choose the model)
             return "pocket", evaluate("pocket", data)
         return ("free_rollers" if share == 0.0 else "pocket" if share == 1.0 else "mixed"), f
 
@@ -371,7 +373,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
             if start == "cold":
                 raise
             continue
-        used, f = solve(data)
+        used, f = solve(data, start)
         problems = plausibility_failures(f, inner_speed_rad_s, dist.residual, dist.roller_residual_max)
         if not problems:
             break

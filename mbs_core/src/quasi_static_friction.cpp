@@ -204,15 +204,17 @@ bool secant(F f, double x0, double x1, double tol, double& root) {
 }
 
 // A root of f near x0: the secant from the warm start guess, else Brent on the bracket
-// x0 (1 -+ rel), widened about x0 by factors of 2 (at most 30 times) until f changes sign.
+// x0 (1 -+ rel), widened about x0 by factors of 2 (at most 30 times) until f changes sign; with
+// max_dist, the secant's root and the bracket stay within max_dist of x0.
 template <class F>
-bool root_near(F f, double guess, double x0, double rel, double tol, double& root) {
-  if (secant(f, guess, guess * (1.0 + 1e-7), tol, root)) return true;
-  double lo = x0 * (1.0 - rel), hi = x0 * (1.0 + rel);
+bool root_near(F f, double guess, double x0, double rel, double tol, double& root, double max_dist = INFINITY) {
+  if (secant(f, guess, guess * (1.0 + 1e-7), tol, root) && std::abs(root - x0) <= max_dist) return true;
+  const double d0 = std::min(std::abs(x0) * rel, max_dist);
+  double lo = x0 - d0, hi = x0 + d0;
   double flo = f(lo), fhi = f(hi);
-  for (int k = 0; k < 30 && flo * fhi > 0.0; ++k) {
-    lo = x0 + (lo - x0) * 2.0;
-    hi = x0 + (hi - x0) * 2.0;
+  for (int k = 0; k < 30 && flo * fhi > 0.0 && hi - x0 < max_dist; ++k) {
+    lo = std::max(x0 + (lo - x0) * 2.0, x0 - max_dist);
+    hi = std::min(x0 + (hi - x0) * 2.0, x0 + max_dist);
     flo = f(lo);
     fhi = f(hi);
   }
@@ -772,6 +774,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         // in the order of travel (the direction of the cage's motion)
         std::vector<double> lead(Z, 0.0), share_k(Z, 0.0);
         std::vector<int> state(Z, 0);
+        double wall_scale = 0.0;  // sum of |share A| of the last evaluation: the residual's scale
         auto hold = [&](int j, double wc) {  // roller j held at a wall at the cage speed wc
           wall_spin[j] = spin_at(j, wc, true);
           wall_A[j] = eval(rollers[j], wall_spin[j], wc, w_i, lub_o, lub_i, fp, race, ribp, false, true).axis_moment;
@@ -794,12 +797,14 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
           }
           periodic_pocket_walk(lead.data(), state.data(), Z, c_half, share_k.data());
           double sum = 0.0;
+          wall_scale = 0.0;
           for (int k = 0; k < Z; ++k) {
             const int j = wc >= 0.0 ? k : (Z - k) % Z;
             wall_share[j] = share_k[k];
             if (!(wall_share[j] > 0.0)) continue;
             if (free[j]) hold(j, wc);
             sum += wall_share[j] * wall_A[j];
+            wall_scale += std::abs(wall_share[j] * wall_A[j]);
           }
           return sum;
         };
@@ -809,16 +814,24 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         // a roller balance that fails at a trial cage speed of the search (far from the root)
         // does not make the point fail; the balances at the root decide (below)
         const int status_before = status;
+        // (the search stays within half the pure-rolling cage speed of w_h, as the Newton
+        // solves do: beyond it the trial speed would reach zero and reverse the walk)
         const bool found = net_wall_moment(w_h) == 0.0 ||
-                           root_near(net_wall_moment, wc0 * d.cage_ratio_, w_h, 1e-3, 1e-13 * std::abs(wc0), root);
+                           root_near(net_wall_moment, wc0 * d.cage_ratio_, w_h, 1e-3, 1e-13 * std::abs(wc0), root,
+                                     0.5 * std::abs(wc0));
         status = found ? status_before : 1;
         w_c = root;
         cage_residual = net_wall_moment(w_c);
+        // a root the secant settled on at a jump of the net moment (a locked roller changing
+        // its wall) is no balance
+        if (std::abs(cage_residual) > 1e-6 * wall_scale + 1e-15) status = 1;
         walls_on = true;
         double share = 0.0;
+        int loaded = 0;
         for (int j = 0; j < Z; ++j) {
           const double th = wall_share[j];
           share += th;
+          loaded += !rollers[j].points.empty();
           if (rollers[j].points.empty()) {
             orbit[j] = w_c;
             spins[j] = spin_at(j, w_c, false);
@@ -828,7 +841,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
             spins[j] = (1.0 - th) * free_spin[j] + th * wall_spin[j];
           }
         }
-        out.pocket_fraction = share / Z;
+        out.pocket_fraction = loaded > 0 ? share / loaded : 0.0;  // of the loaded rollers' time
       }
     } else {
       // no roller orbits on its own (every loaded one locked): all at the common cage speed

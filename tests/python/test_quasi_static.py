@@ -245,6 +245,20 @@ def test_free_rollers_balance_each_roller_without_pocket_forces(b32216, oil):
     assert forced.cage_model == "free_rollers"
 
 
+def test_pocket_walls_do_not_depend_on_the_direction_of_rotation(b32216, oil):
+    """The walls model turned the other way (inner ring at -2000 rpm): the walk runs through the
+    azimuths in the other order and the locked rollers' walls swap, so the torque and the wall
+    share are the same, the torque's sign reversed (a review's check)."""
+    g, b, m = b32216
+    lub, fr = oil
+    kw = dict(temperature_K=323.15, axial_N=6000.0, radial_N=12000.0, method="independent", slices=15)
+    _, fwd = bearing_friction(g, b, m, lub, fr, cage=True, inner_speed_rad_s=2000 * RPM, **kw)
+    _, rev = bearing_friction(g, b, m, lub, fr, cage=True, inner_speed_rad_s=-2000 * RPM, **kw)
+    assert fwd.cage_model == rev.cage_model == "mixed" and fwd.converged and rev.converged
+    assert rev.drive_torque_Nm == pytest.approx(-fwd.drive_torque_Nm, rel=1e-9)
+    assert rev.pocket_fraction == pytest.approx(fwd.pocket_fraction, rel=1e-9)
+
+
 @pytest.mark.parametrize("slices,method", [(10, "independent"), (30, "independent"), (30, "alternative_slicing")])
 @pytest.mark.parametrize("Fa", [50.0, 100.0, 200.0])
 def test_light_axial_loads_converge(b32216, slices, method, Fa):

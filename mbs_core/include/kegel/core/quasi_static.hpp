@@ -243,8 +243,8 @@ struct BearingFriction {
   double Lambda_min[3] = {0, 0, 0};
   double phi_max[3] = {0, 0, 0};
   double cage_residual_Nm = 0.0;      ///< net moment of the rollers on the cage about the axis
-  /// Walls: the share of the rollers' time spent at a pocket wall (0: all free; 1: all held);
-  /// Pocket: 1; else 0
+  /// Walls: the share of the loaded rollers' time spent at a pocket wall (0: all free; 1: all
+  /// held); Pocket: 1; else 0
   double pocket_fraction = 0.0;
   std::vector<double> roller_wall_share;  ///< Walls: the share of each azimuth step spent at a wall
 };
