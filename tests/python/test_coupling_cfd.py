@@ -98,7 +98,9 @@ def test_bodies_plus_ring_churning_is_the_cfd_loss(b32208, runs, level):
         # the exponents and their residuals are reported; the levels are the point's own
         prov = law.provenance
         assert len(prov["sweep_files"]) == 4 and set(prov["exponents"]) == {"orbit", "spin", "cage"}
-        assert all(0.0 <= r < 0.2 for r in prov["max_abs_residual"].values())
+        # (flooded within 15 %; the oil bath's spin fit within 23 %: its free surface moves
+        # with the speed, so no single power law holds all four points)
+        assert all(0.0 <= r < (0.2 if level == "flooded" else 0.25) for r in prov["max_abs_residual"].values())
 
 
 def test_the_shipped_sweeps_give_these_exponents(b32208, runs):
@@ -117,7 +119,10 @@ def test_the_shipped_sweeps_give_these_exponents(b32208, runs):
     # rollers; the old geometry's shaft-centre cage drag, 0.84, grew more slowly than viscous:
     # the oil the inner ring drags along turns with the cage more as the speed rises)
     assert all(1.0 <= n <= 2.0 for n in got["flooded"].values()), got
-    assert got["shaft_center"] == pytest.approx({"orbit": 1.72, "spin": 0.99, "cage": 0.84}, abs=0.01)
+    # oil to the shaft centre, the real rollers at g = 0.08 D_w (the old geometry: 1.72 / 0.99 /
+    # 0.84): spin and cage grow more slowly than a viscous drag, as less of each body is wetted
+    # the faster it turns (the oil flung off; the immersed share of the flooded sweep is 1)
+    assert got["shaft_center"] == pytest.approx({"orbit": 1.23, "spin": 0.91, "cage": 0.78}, abs=0.01)
 
 
 def _copy_sweep(tmp_path: Path, level: str = "flooded") -> list[Path]:
@@ -307,14 +312,15 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     the slip of its body's speed, at most 2.1 x |slip| + 0.2 %); the figures do not depend on the
     output interval.
 
-    The flooded results are of the real rollers at g = 0.08 D_w: the contact is cut at g (its
-    friction below the uncut one's by the share of the inlet within g, 2.8 % at this point in the
-    gap study) and the hydraulic loss is the CFD's plus the analytic thin films; the oil-bath ones
-    are of the old geometry: contact uncut, no thin films."""
+    Both are of the real rollers at g = 0.08 D_w: the contact is cut at g (its friction below the
+    uncut one's by the share of the inlet within g, 2.8 % flooded at this point in the gap
+    study; 0.2 % at the shaft centre, where the supply already starves the inlets) and the
+    hydraulic loss is the CFD's plus the analytic thin films (the oil bath's with their supply
+    factors)."""
     f, d = next((f, d) for f, d in runs if f"2000rpm_{level}" in str(f))
     loss = d["loss_torque_at_shaft_Nm"]
     real = d["point"].get("gap_ratio") is not None
-    assert real == (level == "flooded")
+    assert real
     thin = d["thin_film_loss_Nm"] if real else 0.0
     qs = _run(tmp_path, "qs", _scene("quasi_static", level=level))
     bnd = qs["hydraulic"]["boundary"]
@@ -325,7 +331,8 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     if real:  # the cut: the same scene with the correlation instead solves the uncut contact
         uncut = _run(tmp_path, "uncut", _scene("quasi_static", level=level).replace(
             f'hydraulic = "cfd"\ncfd_results = "{CFD}"', 'hydraulic = "none"'))
-        assert 0.01 < 1 - qs["friction_torque_Nm"] / uncut["friction_torque_Nm"] < 0.05
+        cut = 1 - qs["friction_torque_Nm"] / uncut["friction_torque_Nm"]
+        assert (0.01 < cut < 0.05) if level == "flooded" else (0.0 < cut < 0.01), cut
     dyn = _run(tmp_path, "dyn", _scene("dynamic", level=level))
     h = dyn["hydraulic"]
     rings = -(d["torques_Nm"]["inner_ring"]["total"] + d["torques_Nm"]["shaft"]["total"])
@@ -391,7 +398,7 @@ def test_geometries_do_not_mix_and_the_real_rollers_win(tmp_path):
         dst.parent.mkdir(parents=True)
         shutil.copy(src, dst)
     runs = read_cfd_results(tmp_path)
-    assert len(runs) == 8
+    assert len(runs) == 12  # 4 real-roller flooded, 4 old flooded, 4 old shaft-centre
     kw = dict(bearing="32208", lubricant="FVA3", temperature_K=323.15, oil_level_m=0.08, flooded=True)
     data, f = find_cfd_result(tmp_path, speed_rad_s=2000 * RPM, results=runs, **kw)
     assert data["point"]["gap_ratio"] == 0.08 and "g0.08" in str(f)
