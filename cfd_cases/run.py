@@ -833,16 +833,13 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     if not point.flooded:
         fidelity.update(max_courant=point.max_courant, max_interface_courant=point.max_interface_courant,
                         initial_state=meta.get("initial_state"))
-    thin = thin_film_json(point, meta)
     out = {"provenance": provenance(), "fidelity": fidelity,
            "point": result.point, "kinematics": kin, "runtime_s": result.runtime_s,
            "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,
            "loss_torque_at_shaft_Nm": result.loss_torque_at_shaft_Nm,
            # the films thinner than the CFD's clearance, as analytic terms (thin_films); the CFD's
            # own numbers above are unchanged
-           "thin_film_loss_Nm": thin["loss_torque_Nm"], "thin_films": thin,
-           "loss_torque_at_shaft_with_thin_films_Nm": (None if thin["loss_torque_Nm"] is None else
-                                                       result.loss_torque_at_shaft_Nm + thin["loss_torque_Nm"]),
+           **thin_film_fields(result.loss_torque_at_shaft_Nm, thin_film_json(point, meta)),
            "averaging_window": list(result.window_s), "steady": result.steady,
            "stopped_by": result.stopped_by,
            **({} if restart is None else {"restart_state_time_s": restart}),
@@ -879,12 +876,15 @@ def refresh_thin_films(case_dir: str | Path) -> dict[str, Any]:
     names = {f.name for f in fields(CfdPoint)}
     raw = {k: v for k, v in meta.get("point", {}).items() if k in names}
     point = CfdPoint(**{k: tuple(v) if isinstance(v, list) else v for k, v in raw.items()})
-    thin = thin_film_json(point, meta)
-    data["thin_film_loss_Nm"] = thin["loss_torque_Nm"]
-    data["thin_films"] = thin
-    data["loss_torque_at_shaft_with_thin_films_Nm"] = data["loss_torque_at_shaft_Nm"] + thin["loss_torque_Nm"]
+    data.update(thin_film_fields(data["loss_torque_at_shaft_Nm"], thin_film_json(point, meta)))
     atomic_write_json(res_path, data)
     return data
+
+
+def thin_film_fields(cfd_loss_Nm: float, thin: dict[str, Any]) -> dict[str, Any]:
+    """The thin-film keys of ``results.json`` for a CFD loss and its :func:`thin_film_json`."""
+    return {"thin_film_loss_Nm": thin["loss_torque_Nm"], "thin_films": thin,
+            "loss_torque_at_shaft_with_thin_films_Nm": cfd_loss_Nm + thin["loss_torque_Nm"]}
 
 
 def thin_film_json(point: CfdPoint, meta: dict[str, Any]) -> dict[str, Any]:

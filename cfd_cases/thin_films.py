@@ -766,15 +766,14 @@ def thin_film_losses(g, bearing, *, lubricant: str, temperature_K: float, inner_
 
     rib = rib_film_loss(g, bearing, lubricant, temperature_K, inner_speed_rad_s, clearance_m,
                         rib_load_N=rib_load_N, cells=cells, material=material)
-    eta = lubricant_state(lubricant, temperature_K).dynamic_viscosity_Pas
-    pocket = pocket_film_loss(g, eta, inner_speed_rad_s, clearance_m)
+    oil = lubricant_state(lubricant, temperature_K)
+    pocket = pocket_film_loss(g, oil.dynamic_viscosity_Pas, inner_speed_rad_s, clearance_m)
     w = abs(inner_speed_rad_s)
     supply = None
     f_rib = f_pocket = 1.0
     if oil_level_m is not None:
         supply = oil_bath_film_factors(g, bearing, oil_level_m=oil_level_m, inner_speed_rad_s=inner_speed_rad_s,
-                                       kinematic_viscosity_m2_s=lubricant_state(lubricant, temperature_K)
-                                       .kinematic_viscosity_m2_s)
+                                       kinematic_viscosity_m2_s=oil.kinematic_viscosity_m2_s)
         f_rib, f_pocket = supply["rib"], supply["pockets"]
     parts = {"rib": f_rib * rib["loss_W"] / w, "pocket_sides": f_pocket * pocket["sides"]["loss_W"] / w,
              "pocket_ends": f_pocket * pocket["ends"]["loss_W"] / w}

@@ -748,12 +748,14 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         spins[j] = spins[0];
         orbit[j] = orbit[0];
       }
+      // the roller at step k of a revolution travelled in the direction of the cage's motion
+      auto roller_at_step = [Z](int k, double wc) { return wc >= 0.0 ? k : (Z - k) % Z; };
       // the accumulated lead of a roller over its pocket, travelling once round in the
       // direction of the cage's motion, from pocket azimuth to pocket azimuth
       const double step = 2.0 * kPi / Z * v.pitch_radius_m;
       double lead = 0.0, lo = 0.0, hi = 0.0;
       for (int k = 0; k < Z; ++k) {
-        const int j = w_c >= 0.0 ? k : (Z - k) % Z;
+        const int j = roller_at_step(k, w_c);
         lead += step * (1.0 - w_c / orbit[j]);
         lo = std::min(lo, lead);
         hi = std::max(hi, lead);
@@ -783,7 +785,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         auto net_wall_moment = [&](double wc) {
           const double s = wc >= 0.0 ? 1.0 : -1.0;
           for (int k = 0; k < Z; ++k) {
-            const int j = wc >= 0.0 ? k : (Z - k) % Z;
+            const int j = roller_at_step(k, wc);
             lead[k] = 0.0;
             if (rollers[j].points.empty()) {
               state[k] = 2;
@@ -799,7 +801,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
           double sum = 0.0;
           wall_scale = 0.0;
           for (int k = 0; k < Z; ++k) {
-            const int j = wc >= 0.0 ? k : (Z - k) % Z;
+            const int j = roller_at_step(k, wc);
             wall_share[j] = share_k[k];
             if (!(wall_share[j] > 0.0)) continue;
             if (free[j]) hold(j, wc);
