@@ -262,7 +262,12 @@ class CageModel(enum.Enum):
 
     walls = 3
 
-def evaluate_bearing_friction(model: BearingModel, data: BearingData, loads: BearingLoads, inner_speed_rad_s: float, lubricant_state: kegel._core.tribology.ContactLubricantState, friction: kegel._core.tribology.FrictionParameters, raceway: kegel._core.tribology.SurfacePair, rib: kegel._core.tribology.SurfacePair, rib_cells: int = 0, cage: CageModel = CageModel.free_rollers, outer_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None, inner_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None) -> dict:
+class RibPressure(enum.Enum):
+    hertz = 0
+
+    solved = 1
+
+def evaluate_bearing_friction(model: BearingModel, data: BearingData, loads: BearingLoads, inner_speed_rad_s: float, lubricant_state: kegel._core.tribology.ContactLubricantState, friction: kegel._core.tribology.FrictionParameters, raceway: kegel._core.tribology.SurfacePair, rib: kegel._core.tribology.SurfacePair, rib_cells: int = 0, cage: CageModel = CageModel.free_rollers, outer_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None, inner_lubricant_state: kegel._core.tribology.ContactLubricantState | None = None, rib_pressure: RibPressure = RibPressure.hertz) -> dict:
     """
-    Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model). outer_lubricant_state / inner_lubricant_state (default: lubricant_state): the lubricant state of the outer ring's contacts and of the inner ring's (its raceway and the rib), for a contact temperature per ring.
+    Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model, its pressure field as rib_pressure says: Hertz's ellipse unless an edge cuts it, or solved for every roller). outer_lubricant_state / inner_lubricant_state (default: lubricant_state): the lubricant state of the outer ring's contacts and of the inner ring's (its raceway and the rib), for a contact temperature per ring.
     """

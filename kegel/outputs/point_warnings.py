@@ -12,6 +12,11 @@ Codes
     solver raised, and it has no figures (the message is the record's ``failure``).
 ``cage_pocket_fallback``
     The free-roller cage solution failed its balances; the cage pockets carry every roller.
+``rib_edge_loading``
+    The Hertz ellipse of some rollers' contact with the rib is cut by the rib's top or by the edge
+    of the roller end's spherical cap (``rib_edge_rollers``): the contact runs on an edge, where
+    its pressure peaks and wear and scuffing start. The rib cell model solves those contacts'
+    pressure from the exact gap. The closed-form rib (``rib_model = "hertz"``) does not check.
 ``mixed_lubrication``
     A contact's film parameter Lambda < 1: asperity contact carries load and the solid friction
     parameters (textbook values, marked ``verify``) enter the answer.
@@ -162,6 +167,11 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
         out.append(Warning_("supply_beyond_source_range", "the oil supply's starvation factor (SKF phi_rs) is below "
                             "Biboulet-Houpert's Eq. 44 at its most starved computed inlet (S = 2, factor 0.2001): "
                             "the raceway contacts get that factor, a smaller reduction than SKF's"))
+    edge = point.get("rib_edge_rollers") or 0
+    if edge > 0:
+        out.append(Warning_("rib_edge_loading", f"{edge} roller(s) run on an edge at the rib: their Hertz ellipse "
+                            "is cut by the rib's top or the roller end's cap (edge loading; the cell model solves "
+                            "their pressure from the exact gap)"))
     lam = point.get("Lambda_min") or {}
     if isinstance(lam, dict) and lam:
         worst = min(lam, key=lambda k: lam[k])

@@ -212,6 +212,9 @@ class BearingFrictionResult:
     #: how it was solved: "warm" (from the previous point's state), "cold" (fresh state, after
     #: a warm solution failed its gates, or when no state was passed in)
     start: str = "cold"
+    #: rib cell model: the rollers whose Hertz ellipse at the rib is cut by the edge of the
+    #: roller end's cap or of the rib (edge loading; their pressure field is solved, not Hertz's)
+    rib_edge_rollers: int = 0
 
     @property
     def cage_slip(self) -> float:
@@ -245,7 +248,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                      axial_offset_m: float | None = None, radial_N: float = 0.0, misalignment_rad: float = 0.0,
                      tilt_moment_Nm: float = 0.0,
                      slices: int = 30, method: str = "alternative_slicing", rib_cells: int = 0,
-                     cage: bool | str = True,
+                     cage: bool | str = True, rib_pressure: str = "hertz",
                      model: "Q.BearingModel | None" = None, data: "Q.BearingData | None" = None,
                      inner_ring_temperature_K: float | None = None, outer_ring_temperature_K: float | None = None
                      ) -> tuple[LoadDistribution, BearingFrictionResult]:
@@ -266,6 +269,13 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     rib_cells
         0: the rib as one closed-form elliptic contact; n > 0: its pressure field by the cell
         model (n x n) with every cell's friction at its own sliding velocity.
+    rib_pressure
+        The cell model's pressure field (``kegel._core.quasi_static.RibPressure``): ``"hertz"``
+        (default) - Hertz's elliptic pressure sampled on the cells wherever the contact ellipse
+        lies wholly on the roller end's cap and the rib face (the gap is then the surfaces'
+        quadratic, Hertz's own problem), the elastic half-space solve (FFT + conjugate
+        gradients) for a roller whose ellipse an edge cuts (counted in ``rib_edge_rollers``);
+        ``"solved"`` - the half-space solve for every roller.
     cage
         How the cage enters (``kegel._core.quasi_static.CageModel``): ``"free_rollers"`` - every
         loaded roller orbits at the speed at which its contacts have no circumferential
@@ -340,11 +350,15 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
     if not (isinstance(cage, (bool, str)) and cage in modes):
         raise KegelInputError("<argument>", "cage", cage, "True, False, 'off', 'pocket', 'free_rollers' or 'walls'")
     mode = modes[cage]
+    if rib_pressure not in ("hertz", "solved"):
+        raise KegelInputError("<argument>", "rib_pressure", rib_pressure, "'hertz' or 'solved'")
+    pressure = getattr(Q.RibPressure, rib_pressure)
 
     def evaluate(mode: str, data) -> dict:
         return Q.evaluate_bearing_friction(model, data, loads, inner_speed_rad_s, state, friction.core(lubricant),
                                            race, rib, rib_cells, getattr(Q.CageModel, mode),
-                                           outer_lubricant_state=ring_states[1], inner_lubricant_state=ring_states[0])
+                                           outer_lubricant_state=ring_states[1], inner_lubricant_state=ring_states[0],
+                                           rib_pressure=pressure)
 
     def solve(data, start: str) -> tuple[str, dict]:
         f = evaluate(mode, data)
@@ -399,6 +413,7 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         locked_rollers=f["locked_rollers"],
         failure="; ".join(problems) if problems else None,
         start=start,
+        rib_edge_rollers=f["rib_edge_rollers"],
     )
     return dist, res
 

@@ -89,15 +89,19 @@ void bind_quasi_static(nb::module_& parent) {
       .value("pocket", CageModel::Pocket)
       .value("free_rollers", CageModel::FreeRollers)
       .value("walls", CageModel::Walls);
+  nb::enum_<RibPressure>(m, "RibPressure")
+      .value("hertz", RibPressure::Hertz)
+      .value("solved", RibPressure::Solved);
   m.def(
       "evaluate_bearing_friction",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads, double inner_speed,
          const ContactLubricantState& lub, const FrictionParameters& fp, const SurfacePair& race,
          const SurfacePair& rib, int rib_cells, CageModel cage, const ContactLubricantState* outer_lub,
-         const ContactLubricantState* inner_lub) {
+         const ContactLubricantState* inner_lub, RibPressure rib_pressure) {
         BearingFriction f;
         const int status = evaluate_bearing_friction(model, data, loads, inner_speed, outer_lub ? *outer_lub : lub,
-                                                     inner_lub ? *inner_lub : lub, fp, race, rib, f, rib_cells, cage);
+                                                     inner_lub ? *inner_lub : lub, fp, race, rib, f, rib_cells, cage,
+                                                     rib_pressure);
         if (status < 0) throw std::invalid_argument("evaluate_bearing_friction: solve the load distribution first, "
                                                     "with a finite non-zero inner-ring speed and 0 <= rib_cells <= 256 (cage = walls: a model with cage_pocket_clearance_m > 0)");
         nb::dict d;
@@ -119,13 +123,15 @@ void bind_quasi_static(nb::module_& parent) {
         d["cage_residual_Nm"] = f.cage_residual_Nm;
         d["pocket_fraction"] = f.pocket_fraction;
         d["roller_wall_share"] = f.roller_wall_share;
+        d["rib_edge_rollers"] = f.rib_edge_rollers;
         put_friction_by_contact(d, f.power_W, f.Lambda_min, f.phi_max);
         return d;
       },
       "model"_a, "data"_a, "loads"_a, "inner_speed_rad_s"_a, "lubricant_state"_a, "friction"_a, "raceway"_a,
       "rib"_a, "rib_cells"_a = 0, "cage"_a = CageModel::FreeRollers, "outer_lubricant_state"_a.none() = nb::none(),
-      "inner_lubricant_state"_a.none() = nb::none(),
-      "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model). "
+      "inner_lubricant_state"_a.none() = nb::none(), "rib_pressure"_a = RibPressure::Hertz,
+      "Friction of the whole bearing at the solved load distribution (rib_cells > 0: rib cell model, its "
+      "pressure field as rib_pressure says: Hertz's ellipse unless an edge cuts it, or solved for every roller). "
       "outer_lubricant_state / inner_lubricant_state (default: lubricant_state): the lubricant state of the "
       "outer ring's contacts and of the inner ring's (its raceway and the rib), for a contact temperature per ring.");
 }

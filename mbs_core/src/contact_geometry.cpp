@@ -80,7 +80,7 @@ SliceInput make_slice_input(const SliceGeometry& g, double q, double width,
 }
 
 double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double dx, double dy,
-               double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R) noexcept {
+               double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R, const unsigned char* cells) noexcept {
   Eigen::Vector3d n_out;
   const double s = cone_distance(rib.cone, end.p_RE, n_out);
   n_R = n_out;                                   // the roller lies on the n_out side of the rib
@@ -93,6 +93,10 @@ double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double 
   const double R = end.sphere_radius_m;
   for (int i = 0; i < nx; ++i) {
     for (int j = 0; j < ny; ++j) {
+      if (cells && !cells[i * ny + j]) {
+        h0[i * ny + j] = R;
+        continue;
+      }
       const Eigen::Vector3d q = p_RC + ((i + 0.5 - 0.5 * nx) * dx) * t1 + ((j + 0.5 - 0.5 * ny) * dy) * t2;
       // rib surface along the normal: Newton on the cone distance d(q + s n) = 0
       double sr = 0.0;

@@ -466,7 +466,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     // 1e-9 of the load: the slice solvers stop at 1e-10 of their line loads, and summed over the
     // rollers that leaves a residual noise of ~1e-10 of the load (at 1e-10 the chord Newton
     // sometimes spent 5 ... 16 iterations on that noise)
-    if (ndof == 0 || active(full).cwiseAbs().maxCoeff() <= 1e-9 * scale) {
+    if (ndof == 0 || active(full).cwiseAbs().maxCoeff() <= 1e-8 * scale) {
       status = 0;
       break;
     }

@@ -265,19 +265,23 @@ double periodic_pocket_walk(const double* lead, const int* state, int n, double 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub, const FrictionParameters& fp,
                               const SurfacePair& race, const SurfacePair& ribp, BearingFriction& out,
-                              int rib_cells, CageModel cage_model) noexcept {
-  return evaluate_bearing_friction(m, d, L, w_i, lub, lub, fp, race, ribp, out, rib_cells, cage_model);
+                              int rib_cells, CageModel cage_model, RibPressure rib_pressure) noexcept {
+  return evaluate_bearing_friction(m, d, L, w_i, lub, lub, fp, race, ribp, out, rib_cells, cage_model, rib_pressure);
 }
 
 int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const BearingLoads& L, double w_i,
                               const ContactLubricantState& lub_o, const ContactLubricantState& lub_i,
                               const FrictionParameters& fp, const SurfacePair& race, const SurfacePair& ribp,
-                              BearingFriction& out, int rib_cells, CageModel cage_model) noexcept {
+                              BearingFriction& out, int rib_cells, CageModel cage_model,
+                              RibPressure rib_pressure) noexcept {
   bool cage = cage_model == CageModel::Pocket;  // pocket forces and friction (every roller)
   const bool walls = cage_model == CageModel::Walls;
   if (walls && !(m.values().cage_pocket_clearance_m > 0.0)) return -1;
   if (!d.has_solution || !std::isfinite(w_i) || w_i == 0.0 || rib_cells < 0 || rib_cells > 256) return -1;
   std::vector<double> rib_h0;
+  std::vector<unsigned char> rib_in;  // the cells inside the rib's Hertz ellipse
+  std::vector<double> rib_p;          // Hertz's pressure on the rib cells
+  int out_rib_edge = 0;  // rollers whose rib ellipse an edge cuts (their cell field solved)
   const auto& v = m.values();
   const int Z = v.roller_count, n = v.slices;
   const double w = m.outer_line().width_m();
@@ -310,15 +314,17 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
       // torque by 1 % between a cold and a warm start at 32 x 32 cells). Its cells scale with the
       // contact, so the previous pressure fields, copied cell by cell, remain good warm starts
       // (the solver rescales them to the new load).
-      const bool same = d.rib_grid_ && d.rib_grid_->nx() == rib_cells && dx == d.rib_dx_ && dy == d.rib_dy_;
+      const bool same = d.rib_n_ == rib_cells && dx == d.rib_dx_ && dy == d.rib_dy_;
       if (!same) {
-        // one workspace (FFT plans) for all rollers; each roller keeps its own pressure field,
-        // copied cell by cell from the last grid as its warm start
-        d.rib_grid_ = std::make_shared<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
-        d.rib_work_ = std::make_shared<CellContactData>(*d.rib_grid_);
+        // one workspace (FFT plans) for all rollers, built when a roller's field is first solved
+        // (Hertz's field needs none); each roller keeps its own solved pressure field, copied cell
+        // by cell from the last grid as its warm start
+        d.rib_grid_.reset();
+        d.rib_work_.reset();
         if (int(d.rib_pressure_.size()) != Z) d.rib_pressure_.assign(Z, {});
         for (auto& pr : d.rib_pressure_)
           if (pr.size() != size_t(rib_cells) * rib_cells) pr.clear();
+        d.rib_n_ = rib_cells;
         d.rib_dx_ = dx;
         d.rib_dy_ = dy;
       }
@@ -382,23 +388,68 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         r.points.push_back(c);
       } else {
         // cell model on the bearing's rib grid (x along the rib generator, y circumferential)
-        if (!d.rib_grid_) return -1;
+        if (d.rib_n_ != rib_cells) return -1;
         const double dx = d.rib_dx_, dy = d.rib_dy_;
-        CellContactData& field = *d.rib_work_;
-        std::vector<double>& warm = d.rib_pressure_[j];
-        field.has_solution = !warm.empty();
-        if (field.has_solution) field.pressure_Pa = warm;
-        rib_h0.assign(size_t(rib_cells) * rib_cells, 0.0);
+        const size_t nc_cells = size_t(rib_cells) * rib_cells;
+        rib_p.resize(nc_cells);
+        const double* pressure = rib_p.data();
+        rib_h0.assign(nc_cells, 0.0);
         Eigen::Vector3d pc2, nc2;
-        rib_gap(m.roller_end(Mi, ai), m.rib_face(), rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
-        // the pressure field to 1e-6 (relative change, load-normalised), not the solver's default
-        // 1e-9: a warm start then takes 8-9 conjugate-gradient steps instead of 13-16 (the rib
-        // cells were 40 % of a warm combined-load point), and the torque moves by 6e-10 (32216,
-        // Fa 6 kN, Fr 6.5 kN, 2000 rpm)
-        CellContactSettings cs;
-        cs.tolerance = 1e-6;
-        if (solve_cell_contact(*d.rib_grid_, field, rib_h0.data(), hz.load_N, cs) < 0) return -1;
-        warm = field.pressure_Pa;
+        const RollerEnd end = m.roller_end(Mi, ai);
+        // Hertz's field where the ellipse lies wholly on the cap and the rib (see RibPressure):
+        // a cell inside the ellipse whose gap is the far value of rib_gap (off the cap or off
+        // the rib) means an edge cuts the contact. Hertz's field needs the gap inside the
+        // ellipse only; the solved field needs all of it.
+        const bool x_minor = m.rib_Rx_m() <= m.rib_Ry_m();
+        const double ax = x_minor ? hz.semi_minor_m : hz.semi_major_m;
+        const double ay = x_minor ? hz.semi_major_m : hz.semi_minor_m;
+        rib_in.assign(nc_cells, 0);
+        double sum = 0.0;
+        for (int ix = 0; ix < rib_cells; ++ix) {
+          const double x = (ix + 0.5 - 0.5 * rib_cells) * dx / ax;
+          for (int iy = 0; iy < rib_cells; ++iy) {
+            const double y = (iy + 0.5 - 0.5 * rib_cells) * dy / ay;
+            const double rho = 1.0 - x * x - y * y;
+            const size_t k = size_t(ix) * rib_cells + iy;
+            const double sq = rho > 0.0 ? std::sqrt(rho) : 0.0;
+            rib_p[k] = sq;
+            rib_in[k] = rho > 0.0;
+            sum += sq;
+          }
+        }
+        const bool masked = rib_pressure == RibPressure::Hertz;
+        rib_gap(end, m.rib_face(), rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2,
+                masked ? rib_in.data() : nullptr);
+        const double far = 0.5 * end.sphere_radius_m;
+        bool edge = false;
+        for (size_t k = 0; k < nc_cells && !edge; ++k)
+          if (rib_in[k] && !(rib_h0[k] < far)) edge = true;
+        if (edge) ++out_rib_edge;
+        // an ellipse smaller than a cell (no cell centre inside): the solved field
+        const bool hertz = masked && !edge && sum > 0.0;
+        if (hertz) {
+          const double scale = hz.load_N / (sum * dx * dy);
+          for (double& p : rib_p) p *= scale;
+        } else {
+          if (masked) rib_gap(end, m.rib_face(), rib_cells, rib_cells, dx, dy, rib_h0.data(), pc2, nc2);
+          if (!d.rib_grid_) {
+            d.rib_grid_ = std::make_shared<CellContactModel>(rib_cells, rib_cells, dx, dy, v.E_reduced_Pa);
+            d.rib_work_ = std::make_shared<CellContactData>(*d.rib_grid_);
+          }
+          CellContactData& field = *d.rib_work_;
+          std::vector<double>& warm = d.rib_pressure_[j];
+          field.has_solution = !warm.empty();
+          if (field.has_solution) field.pressure_Pa = warm;
+          // the pressure field to 1e-6 (relative change, load-normalised), not the solver's
+          // default 1e-9: a warm start then takes 8-9 conjugate-gradient steps instead of 13-16
+          // (the rib cells were 40 % of a warm combined-load point), and the torque moves by
+          // 6e-10 (32216, Fa 6 kN, Fr 6.5 kN, 2000 rpm)
+          CellContactSettings cs;
+          cs.tolerance = 1e-6;
+          if (solve_cell_contact(*d.rib_grid_, field, rib_h0.data(), hz.load_N, cs) < 0) return -1;
+          warm = field.pressure_Pa;
+          pressure = field.pressure_Pa.data();
+        }
         // tangent basis of the grid (as in rib_gap), in the ring frame
         const Eigen::Vector3d er_r = Eigen::Vector3d(pc.x(), pc.y(), 0.0).normalized();
         const Eigen::Vector3d t1 = std::cos(v.rib_half_angle_rad) * Eigen::Vector3d::UnitZ() +
@@ -406,7 +457,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         const Eigen::Vector3d t2(-er_r.y(), er_r.x(), 0.0);
         for (int ix = 0; ix < rib_cells; ++ix) {
           for (int iy = 0; iy < rib_cells; ++iy) {
-            const double pr = field.pressure_Pa[ix * rib_cells + iy];
+            const double pr = pressure[ix * rib_cells + iy];
             if (!(pr > 0.0)) continue;
             Point c;
             const Eigen::Vector3d q = pc + ((ix + 0.5 - 0.5 * rib_cells) * dx) * t1 + ((iy + 0.5 - 0.5 * rib_cells) * dy) * t2;
@@ -860,6 +911,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
   }
   out.roller_orbit_rad_s = orbit;
   out.roller_wall_share = wall_share;
+  out.rib_edge_rollers = d.symmetric && out_rib_edge > 0 ? Z : out_rib_edge;
   out.cage_residual_Nm = cage_residual;
   out.cage_speed_rad_s = w_c;
   out.roller_spin_rad_s = spins;

@@ -235,6 +235,23 @@ def test_mixed_lubrication_and_range_warnings(tmp_path):
     assert "mixed_lubrication" not in codes[1]
 
 
+def test_rib_edge_loading_is_recorded_and_warned():
+    """A point records how many rollers' rib contacts an edge cuts (rib_edge_rollers, the rib
+    cell model: kegel._core.quasi_static.RibPressure); a count above zero is warned."""
+    from kegel.point_warnings import point_warnings
+
+    s = scene_from_dict({"bearing": {"designation": "32216"}, "lubricant": {"name": "FVA3"},
+                         "operating": {"axial_load": "6 kN", "radial_load": "6.5 kN", "speed": "2000 rpm",
+                                       "temperature": "50 degC"},
+                         "lubrication": {"mode": "oil_bath", "oil_level": "half_roller"}})
+    (p,) = run_scene(s, write=False, progress=False).points
+    assert p["rib_edge_rollers"] == 0
+    assert "rib_edge_loading" not in {w["code"] for w in p["warnings"]}
+    edged = point_warnings(s, {**p, "rib_edge_rollers": 3})
+    (w,) = [w for w in edged if w.code == "rib_edge_loading"]
+    assert w.message.startswith("3 roller(s)")
+
+
 def test_compared_range_is_the_example_scenes_range():
     """COMPARED_RANGE must cover exactly the conditions kegel validate compares at (the Table 1-3
     scenes): recomputed here, so a change of the scenes cannot leave it stale."""

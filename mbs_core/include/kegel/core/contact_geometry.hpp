@@ -96,8 +96,11 @@ struct RibFace {
 /// Returns the minimum gap, exact at the foot of the sphere centre (< 0: the undeformed bodies
 /// overlap, the rigid interference is -minimum); h0 (nx * ny, row-major) receives the gap minus
 /// that minimum (>= 0) for solve_cell_contact(), whose approach is then the interference; p_RC the closest rib point; n_R the normal (rib -> roller).
+/// cells (nx * ny, optional): only the cells where it is non-zero are evaluated, the others get
+/// the far gap (one sphere radius minus the minimum), as if off the cap.
 double rib_gap(const RollerEnd& end, const RibFace& rib, int nx, int ny, double dx, double dy,
-               double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R) noexcept;
+               double* h0, Eigen::Vector3d& p_RC, Eigen::Vector3d& n_R,
+               const unsigned char* cells = nullptr) noexcept;
 
 /// A cage pocket: two flat side walls symmetric to the pocket's centre plane (which contains the
 /// ring axis), at +-(half_width + y tan(taper)) from it, so that they follow the taper of the

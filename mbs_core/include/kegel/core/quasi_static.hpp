@@ -154,6 +154,17 @@ struct RollerState {
 ///    zero as the drift reaches the clearance.
 enum class CageModel { Off = 0, Pocket = 1, FreeRollers = 2, Walls = 3 };
 
+/// The pressure field of the rib cell model (rib_cells > 0).
+/// - Hertz: Hertz's elliptic pressure p0 sqrt(1 - x^2/a^2 - y^2/b^2) sampled at the cell centres
+///   (scaled to the rib load) wherever the contact ellipse lies wholly on the roller end's
+///   spherical cap and on the rib face: the gap there is the quadratic of the two surfaces'
+///   radii, which is Hertz's problem, so the half-space solve would return the same field up to
+///   its discretisation. Where the cap's or the rib's edge cuts the ellipse (edge loading), the
+///   cell field is solved (as Solved).
+/// - Solved: the elastic half-space pressure from the gap field by FFT + conjugate gradients,
+///   for every roller.
+enum class RibPressure { Hertz = 0, Solved = 1 };
+
 struct BearingFriction;
 
 /// The periodic walk of a roller through its cage pocket over one revolution (CageModel::Walls),
@@ -188,7 +199,7 @@ class BearingData {
   friend int evaluate_bearing_friction(const BearingModel&, BearingData&, const BearingLoads&, double,
                                        const ContactLubricantState&, const ContactLubricantState&,
                                        const FrictionParameters&, const SurfacePair&, const SurfacePair&,
-                                       BearingFriction&, int, CageModel) noexcept;
+                                       BearingFriction&, int, CageModel, RibPressure) noexcept;
   std::vector<double> orbit_ratio_;      // FreeRollers warm start: roller orbit / pure-rolling cage speed
   std::vector<double> free_spin_ratio_;  // and its spin / pure-rolling spin (NaN: no warm start)
   std::vector<double> free_jacobian_;    // 2 x 2 derivatives of its balances, per roller (chord)
@@ -202,6 +213,7 @@ class BearingData {
   std::shared_ptr<CellContactData> rib_work_;
   std::vector<std::vector<double>> rib_pressure_;
   double rib_dx_ = 0.0, rib_dy_ = 0.0;
+  int rib_n_ = 0;  // the rib grid's cells each way (0: none sized yet)
   std::vector<SliceGeometry> geo_;
   std::vector<double> e_;
   Eigen::MatrixXd ring_jacobian_;  // reused across iterations and operating points (chord Newton)
@@ -247,19 +259,24 @@ struct BearingFriction {
   /// held); Pocket: 1; else 0
   double pocket_fraction = 0.0;
   std::vector<double> roller_wall_share;  ///< Walls: the share of each azimuth step spent at a wall
+  /// rib cell model: the rollers whose Hertz ellipse at the rib is cut by the edge of the roller
+  /// end's cap or of the rib (edge loading; their cell field is solved, see RibPressure)
+  int rib_edge_rollers = 0;
 };
 
 /// Evaluate the friction at the load distribution in data (solve_load_distribution first).
 /// @return 0 on success, 1 if the cage or a roller balance did not converge, -1 bad input.
 /// cage: see CageModel (Pocket adds the friction of the cage pockets, Eq. 37).
-/// rib_cells = 0 evaluates the rib as one elliptic contact; rib_cells = n > 0 solves its pressure
-/// field with the cell model (n x n cells over 3 Hertz semi-axes each way, FFT + CG) for the
-/// rib load and evaluates every loaded cell with its own velocities (the drilling friction).
+/// rib_cells = 0 evaluates the rib as one elliptic contact; rib_cells = n > 0 spreads the rib load
+/// over the cell model's grid (n x n cells over 3 Hertz semi-axes each way; the pressure field
+/// as rib_pressure says, see RibPressure) and evaluates every loaded cell with its own
+/// velocities (the drilling friction).
 int evaluate_bearing_friction(const BearingModel& model, BearingData& data, const BearingLoads& loads,
                               double inner_speed_rad_s, const ContactLubricantState& lubricant,
                               const FrictionParameters& friction, const SurfacePair& raceway,
                               const SurfacePair& rib, BearingFriction& out, int rib_cells = 0,
-                              CageModel cage = CageModel::FreeRollers) noexcept;
+                              CageModel cage = CageModel::FreeRollers,
+                              RibPressure rib_pressure = RibPressure::Hertz) noexcept;
 
 /// The same with a lubricant state per ring (issue 27, item 6: a contact temperature per ring):
 /// the outer raceway's contacts are evaluated with outer_lubricant, the inner raceway's and the
@@ -269,7 +286,8 @@ int evaluate_bearing_friction(const BearingModel& model, BearingData& data, cons
                               double inner_speed_rad_s, const ContactLubricantState& outer_lubricant,
                               const ContactLubricantState& inner_lubricant, const FrictionParameters& friction,
                               const SurfacePair& raceway, const SurfacePair& rib, BearingFriction& out,
-                              int rib_cells = 0, CageModel cage = CageModel::FreeRollers) noexcept;
+                              int rib_cells = 0, CageModel cage = CageModel::FreeRollers,
+                              RibPressure rib_pressure = RibPressure::Hertz) noexcept;
 
 /// Solve the load distribution. An axisymmetric load case (no radial load, no tilt moment, no
 /// misalignment, tilt imposed) is solved for one roller and replicated: every roller then
