@@ -218,6 +218,9 @@ class BearingData {
   std::vector<double> e_;
   Eigen::MatrixXd ring_jacobian_;  // reused across iterations and operating points (chord Newton)
   int ring_jacobian_mask_ = -1;    // which DOF it belongs to
+  // per roller, d(u, w, tilt) / d(ring DOF) from the ring Jacobian's columns: the predictor of
+  // the rollers' start for a ring step (rows u, w, tilt; columns the 5 ring DOF)
+  std::vector<Eigen::Matrix<double, 3, 5>> roller_sensitivity_;
 };
 
 /// Friction of the whole bearing at a solved load distribution (quasi-static, steady state).
