@@ -5,7 +5,8 @@ here another job may hold the cores, and then the wall time measures the schedul
 loose (about twice the measured figure) so that it fails only on a real regression: before the
 rib contact was scaled from a reference approach and the free rollers were solved with a damped
 chord Newton, the warm point took about 65 ms of CPU time (benchmarks/bench_quasi_static.py);
-before the rib cells took Hertz's field (RibPressure), 16-17 ms; then 9-10 ms; with Broyden updates in the load distribution 7 ms.
+before the rib cells took Hertz's field (RibPressure), 16-17 ms; then 9-10 ms; with Broyden
+updates in the load distribution, 7 ms.
 """
 
 from __future__ import annotations
