@@ -4,7 +4,8 @@ For each fidelity level (slice model and slice count) it reports the median runt
 operating point (load distribution + friction, cold: a fresh model each time, and warm: the
 next point of a sweep) and the deviation of the friction torque from the finest level; a 50-point
 speed sweep at the default level; the combined-load point (Fa 6 kN, Fr 6.5 kN) at the default and
-the fine level; writes benchmarks/results/quasi_static.{json,png}.
+the fine level, and along a speed and a radial-load sweep; writes
+benchmarks/results/quasi_static.{json,png}.
 
 Times are medians of repeated runs, as wall time and as the CPU time of the calling thread
 (``time.thread_time``). On a machine that runs another job (the CFD studies run OpenFOAM on both
@@ -102,12 +103,30 @@ def main() -> None:
     comb.update(torque_Nm=fc.drive_torque_Nm, fine_torque_Nm=ff.drive_torque_Nm,
                 deviation_from_fine=fc.drive_torque_Nm / ff.drive_torque_Nm - 1, cage_model=fc.cage_model,
                 fine_cold_cpu_ms=comb_fine["cold_cpu_ms"], fine_warm_cpu_ms=comb_fine["warm_cpu_ms"])
+    # the combined load along a sweep: 50 speeds from 1500 to 2500 rpm (20 rpm apart), warm-started
+    # point after point, and 10 radial loads from 6 to 7 kN (as a load-spectrum study walks)
+    model = bearing_model(g, b, m, slices=DEFAULT[2], method=DEFAULT[1])
+    data = _core.quasi_static.BearingData(model)
+    bearing_friction(g, b, m, lub, fr, model=model, data=data, rib_cells=DEFAULT[3], **{**kw_c, "inner_speed_rad_s": 1500 * RPM})
+    sweeps = {}
+    for name, points in (("speed", [{**kw_c, "inner_speed_rad_s": (1500 + 20 * k) * RPM} for k in range(1, 51)]),
+                         ("radial_load", [{**kw_c, "inner_speed_rad_s": 2500 * RPM, "radial_N": 6000.0 + 100.0 * k}
+                                          for k in range(1, 11)])):
+        c0 = time.thread_time()
+        for p in points:
+            _, f = bearing_friction(g, b, m, lub, fr, model=model, data=data, rib_cells=DEFAULT[3], **p)
+            if not f.converged:
+                raise RuntimeError(f"not converged along the {name} sweep: {f.failure}")
+        sweeps[name] = 1e3 * (time.thread_time() - c0) / len(points)
+    comb.update(sweep_speed_cpu_ms_per_point=sweeps["speed"], sweep_radial_cpu_ms_per_point=sweeps["radial_load"])
     print(f"50-point speed sweep (500-4000 rpm) at the default level: {sweep_s:.2f} s "
           f"({1e3 * sweep_s / 50:.0f} ms per point; CPU {1e3 * sweep_cpu_s / 50:.1f} ms per point); target per point: 20 ms")
     print(f"combined load Fa = 6 kN, Fr = 6.5 kN at the default level (no symmetry): "
           f"cold {comb['cold_ms']:.0f} ms wall / {comb['cold_cpu_ms']:.1f} ms CPU, warm {comb['warm_ms']:.0f} ms wall / "
           f"{comb['warm_cpu_ms']:.1f} ms CPU; {fc.drive_torque_Nm:.5f} N m, "
           f"{100 * comb['deviation_from_fine']:+.3f} % from fine ({ff.drive_torque_Nm:.5f} N m)")
+    print(f"  along a sweep (CPU per point): speed 1500-2500 rpm in 20 rpm steps {sweeps['speed']:.1f} ms, "
+          f"radial load 6-7 kN in 100 N steps {sweeps['radial_load']:.1f} ms")
     OUT.mkdir(exist_ok=True)
     (OUT / "quasi_static.json").write_text(json.dumps({"levels": rows, "sweep_50_points_s": sweep_s, "sweep_50_points_cpu_s": sweep_cpu_s,
                                                        "combined_load": comb,
