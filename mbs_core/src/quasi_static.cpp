@@ -305,7 +305,7 @@ RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<Slice
 
 Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d, std::vector<SliceGeometry>& geo,
                                           std::vector<double>& e, const Eigen::Matrix<double, 5, 1>& x,
-                                          const BearingLoads& L, double scale) {
+                                          const BearingLoads& L, double scale, bool chain = false) {
   const Pose ring = ring_pose(x);
   Eigen::Vector3d F(L.radial_N, 0.0, L.axial_offset_controlled ? 0.0 : -L.axial_N), M(0.0, L.tilt_moment_Nm, 0.0);
   const int Z = m.values().roller_count;
@@ -316,6 +316,14 @@ Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d,
     for (int j = 1; j < Z; ++j) d.rollers[j] = d.rollers[0];
   } else {
     for (int j = 0; j < Z; ++j) {
+      if (chain && j > 0 && d.rollers[j - 1].inner_N > 0.0) {
+        // a cold start: from the neighbour's equilibrium (its azimuth is one pitch away)
+        d.rollers[j].u_m = d.rollers[j - 1].u_m;
+        d.rollers[j].w_m = d.rollers[j - 1].w_m;
+        d.rollers[j].tilt_rad = d.rollers[j - 1].tilt_rad;
+        d.rollers[j].jacobian = d.rollers[j - 1].jacobian;
+        d.rollers[j].has_jacobian = d.rollers[j - 1].has_jacobian;
+      }
       const RollerEval r = solve_roller(m, d, geo, e, j, ring, L.cage_speed_rad_s, scale);
       F += r.F_ring;
       M += r.M_ring;
@@ -457,8 +465,7 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     out = ring_residual(m, d, d.geo_, d.e_, xx, L, scale);
   };
   if (d.symmetric) x[0] = x[1] = 0.0;
-  Eigen::Matrix<double, 5, 1> full;
-  residual(x, full);
+  Eigen::Matrix<double, 5, 1> full = ring_residual(m, d, d.geo_, d.e_, x, L, scale, !d.has_solution);
   auto active = [&](const Eigen::Matrix<double, 5, 1>& f) {
     Eigen::VectorXd a(ndof);
     for (int k = 0; k < ndof; ++k) a[k] = f[idx[k]];
