@@ -2,7 +2,9 @@
 
 Each file has lines ``time (total) (pressure) (viscous)`` with three components each. Restarted
 runs write a new time folder named by their start time; the series are concatenated in time order,
-and a later folder replaces everything an earlier run wrote from its start time on.
+and a later folder replaces everything an earlier run wrote from its start time on. A run restarted
+from a time whose folder already holds an earlier run's file writes ``<stem>_<start time>.dat``
+beside it, which replaces that file's series from the start time on.
 """
 
 from __future__ import annotations
@@ -61,9 +63,14 @@ def _series(case: Path, name: str, file: str) -> np.ndarray:
     if not root.is_dir():
         raise FoamError(f"{root}: no output of function object '{name}' (did the solver run?)")
     parts: list[np.ndarray] = []
+    stem = file.removesuffix(".dat")
     for d in sorted((p for p in root.iterdir() if p.is_dir()), key=lambda p: float(p.name)):
-        f = d / file
-        if f.is_file():
+        # A restart from time d writes into folder d; where an earlier run left its file there
+        # (it was stopped before it wrote a time, so the new run starts from the same time),
+        # OpenFOAM names the new one <stem>_<start time>.dat beside it: the later file wins.
+        files = [f for f in d.iterdir() if f.is_file() and (f.name == file or (
+            f.name.startswith(stem + "_") and f.suffix == ".dat"))]
+        for f in sorted(files, key=lambda f: (f.name != file, f.stat().st_mtime_ns, f.name)):
             # a restart from time d replaces what earlier runs wrote from d on (an interrupted
             # run may have gone past its last written time; its time steps differ from the new ones)
             start = float(d.name)

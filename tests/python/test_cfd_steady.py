@@ -123,6 +123,31 @@ def test_force_series_of_a_resumed_run_replace_what_followed_the_restart_time(tm
     assert f.time[-1] == pytest.approx(0.994)
 
 
+def test_a_run_restarted_from_the_same_time_replaces_the_earlier_file_beside_it(tmp_path):
+    """A run stopped before it wrote any time restarts from 0; OpenFOAM then writes
+    moment_0.dat beside the stopped run's moment.dat in postProcessing/<name>/0. The reader
+    read moment.dat alone: the 23 iterations of the stopped run instead of the new run's 620
+    (the 0.04 D_w, 6-cell gap case, 2026-11-26)."""
+    import os
+
+    from kegel.cfd_cases.forces import read_forces
+
+    root = Path(tmp_path) / "postProcessing" / "forces_x"
+    _write_forces(root / "0", np.arange(1, 24), 1.0)        # the stopped run: iterations 1-23
+    rows = "".join(f"{t:.10g} (2 0 2) (0 0 0) (2 0 2)\n" for t in np.arange(1, 621))
+    for name in ("force_0.dat", "moment_0.dat"):
+        (root / "0" / name).write_text("# Time total pressure viscous\n" + rows)
+        os.utime(root / "0" / name, ns=(2_000_000_000_000_000_000, 2_000_000_000_000_000_000))
+    f = read_forces(tmp_path, "forces_x")
+    assert len(f.time) == 620 and f.time[-1] == 620
+    assert np.all(f.moment_total[:, 2] == 2.0)
+    # and a later restart from a written time still replaces what followed it
+    _write_forces(root / "600", np.arange(601, 700), 3.0)
+    f = read_forces(tmp_path, "forces_x")
+    assert f.time[-1] == 699 and np.all(f.moment_total[f.time > 600, 2] == 3.0)
+    assert np.all(f.moment_total[f.time <= 600, 2] == 2.0)
+
+
 def _fake_oil_bath(tmp_path, t_end: float):
     """A case folder with force series whose loss torque falls to a false plateau of 1.0 N m,
     holds it, then rises to 1.3 N m as in the 32208 start-up (inner ring 10 rad/s, cage 4 rad/s:
