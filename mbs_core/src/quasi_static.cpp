@@ -316,14 +316,9 @@ Eigen::Matrix<double, 5, 1> ring_residual(const BearingModel& m, BearingData& d,
     for (int j = 1; j < Z; ++j) d.rollers[j] = d.rollers[0];
   } else {
     for (int j = 0; j < Z; ++j) {
-      if (chain && j > 0 && d.rollers[j - 1].inner_N > 0.0) {
-        // a cold start: from the neighbour's equilibrium (its azimuth is one pitch away)
-        d.rollers[j].u_m = d.rollers[j - 1].u_m;
-        d.rollers[j].w_m = d.rollers[j - 1].w_m;
-        d.rollers[j].tilt_rad = d.rollers[j - 1].tilt_rad;
-        d.rollers[j].jacobian = d.rollers[j - 1].jacobian;
-        d.rollers[j].has_jacobian = d.rollers[j - 1].has_jacobian;
-      }
+      // a cold start: from the loaded neighbour's equilibrium (its azimuth is one pitch away;
+      // solve_roller writes every other field of the state)
+      if (chain && j > 0 && d.rollers[j - 1].inner_N > 0.0) d.rollers[j] = d.rollers[j - 1];
       const RollerEval r = solve_roller(m, d, geo, e, j, ring, L.cage_speed_rad_s, scale);
       F += r.F_ring;
       M += r.M_ring;
@@ -477,9 +472,11 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
   const Eigen::Matrix<double, 5, 1> h = (Eigen::Matrix<double, 5, 1>() << 1e-9, 1e-9, 1e-9, 1e-8, 1e-8).finished();
   for (int it = 0; it < 100; ++it) {
     ++d.iterations;
-    // 1e-9 of the load: the slice solvers stop at 1e-10 of their line loads, and summed over the
-    // rollers that leaves a residual noise of ~1e-10 of the load (at 1e-10 the chord Newton
-    // sometimes spent 5 ... 16 iterations on that noise)
+    // 1e-8 of the load, 100 times inside the plausibility gate (1e-6): the slice solvers stop at
+    // 1e-10 of their line loads, and summed over the rollers that leaves a residual noise of
+    // ~1e-10 of the load (at 1e-10 the chord Newton sometimes spent 5 ... 16 iterations on that
+    // noise; 1e-9 cost about one ring iteration in three more than 1e-8, for no change in the
+    // torque's 7th digit)
     if (ndof == 0 || active(full).cwiseAbs().maxCoeff() <= 1e-8 * scale) {
       status = 0;
       break;
@@ -537,13 +534,10 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     dx /= s;
     double step = 1.0;
     const double n0 = active(full).norm();
-    Eigen::Matrix<double, 5, 1> fn;
-    {
-      Eigen::Matrix<double, 5, 1> dxr = Eigen::Matrix<double, 5, 1>::Zero();
-      for (int c = 0; c < ndof; ++c) dxr[idx[c]] = dx[c];
-      predicted(dxr);
-      residual(x + dxr, fn);
-    }
+    Eigen::Matrix<double, 5, 1> fn, dx5 = Eigen::Matrix<double, 5, 1>::Zero();  // the step in all 5 DOF
+    for (int c = 0; c < ndof; ++c) dx5[idx[c]] = dx[c];
+    predicted(dx5);
+    residual(x + dx5, fn);
     if (reuse && active(fn).norm() > 0.2 * n0) {
       // the reused Jacobian no longer serves: a fresh one at this iterate
       d.rollers = base;
@@ -552,13 +546,11 @@ int solve_load_distribution(const BearingModel& m, BearingData& d, const Bearing
     }
     for (int b = 0; b < 20 && active(fn).norm() >= n0; ++b) {
       step *= 0.5;
-      Eigen::Matrix<double, 5, 1> dxr = Eigen::Matrix<double, 5, 1>::Zero();
-      for (int c = 0; c < ndof; ++c) dxr[idx[c]] = step * dx[c];
-      predicted(dxr);
-      residual(x + dxr, fn);
+      predicted(step * dx5);
+      residual(x + step * dx5, fn);
     }
     fresh_needed = false;
-    for (int c = 0; c < ndof; ++c) x[idx[c]] += step * dx[c];
+    x += step * dx5;
     // Broyden's update: the stored Jacobian takes the secant of this step, so the chord steps
     // converge superlinearly where the stiffness changes along the path (a Jacobian taken far
     // from the solution otherwise contracted the residual by only 0.1 ... 0.4 per step)

@@ -393,7 +393,7 @@ int evaluate_bearing_friction(const BearingModel& m, BearingData& d, const Beari
         const size_t nc_cells = size_t(rib_cells) * rib_cells;
         rib_p.resize(nc_cells);
         const double* pressure = rib_p.data();
-        rib_h0.assign(nc_cells, 0.0);
+        rib_h0.resize(nc_cells);  // rib_gap writes every cell
         Eigen::Vector3d pc2, nc2;
         const RollerEnd end = m.roller_end(Mi, ai);
         // Hertz's field where the ellipse lies wholly on the cap and the rib (see RibPressure):
