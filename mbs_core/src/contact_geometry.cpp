@@ -12,7 +12,7 @@ struct Meridional {
 };
 
 inline Meridional meridional(const Eigen::Vector3d& p) noexcept {
-  const double r = std::hypot(p.x(), p.y());
+  const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());  // metres: no overflow; hypot is slow
   if (r > 0.0) return {r, Eigen::Vector3d(p.x() / r, p.y() / r, 0.0)};
   return {0.0, Eigen::Vector3d::UnitX()};
 }
