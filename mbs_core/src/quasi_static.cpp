@@ -232,7 +232,10 @@ RollerEval solve_roller(const BearingModel& m, BearingData& d, std::vector<Slice
       }
       const Eigen::Vector3d step = dy.cwiseQuotient(D);
       RollerEval rn = eval_roller(m, d, geo, e, j, ring, x + step, omega_c);
-      if (rn.ok && norm(rn.residual) <= n0 * (1.0 + 1e-12)) {
+      // a step on the plateau (the residual not larger) is taken only downhill, along the net
+      // force: moving against it (e.g. away from the rib along the cup) raises the energy
+      const double n1 = norm(rn.residual);
+      if (rn.ok && (n1 < n0 * (1.0 - 1e-12) || (n1 <= n0 * (1.0 + 1e-12) && dy.dot(rs) >= 0.0))) {
         x += step;
         r = rn;
         accepted = true;
