@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -73,6 +73,11 @@ class CfdBoundary:
         The CFD's loss torque at the shaft (beyond g).
     thin_films_Nm
         The analytic thin-film terms (0 for the old geometry).
+    unloaded_line_wedge_Nm
+        The CFD's far field beyond g on the unloaded stretch of the raceway lines, which the
+        contact model's convention (no rolling resistance off the loaded stretch) does not count
+        (:func:`kegel.coupling.split.unloaded_line_wedge`; it needs the point's load
+        distribution, so it is 0 until :meth:`with_unloaded_line_wedge` sets it).
     """
 
     geometry: str
@@ -80,11 +85,19 @@ class CfdBoundary:
     contact_film_limit_m: float
     cfd_Nm: float
     thin_films_Nm: float
+    unloaded_line_wedge_Nm: float = 0.0
 
     @property
     def hydraulic_Nm(self) -> float:
-        """The hydraulic loss at the shaft that goes with a contact cut at g: CFD + thin films."""
-        return self.cfd_Nm + self.thin_films_Nm
+        """The hydraulic loss at the shaft that goes with a contact cut at g: CFD + thin films,
+        less the CFD's share on the unloaded stretch of the lines."""
+        return self.cfd_Nm + self.thin_films_Nm - self.unloaded_line_wedge_Nm
+
+    def with_unloaded_line_wedge(self, torque_Nm: float) -> "CfdBoundary":
+        """The same boundary with its unloaded-stretch share (a finite torque >= 0)."""
+        if not (math.isfinite(torque_Nm) and torque_Nm >= 0.0):
+            raise KegelInputError("<argument>", "unloaded_line_wedge_Nm", torque_Nm, "a finite torque >= 0")
+        return replace(self, unloaded_line_wedge_Nm=float(torque_Nm))
 
     def as_dict(self) -> dict[str, Any]:
         return {**asdict(self), "hydraulic_Nm": self.hydraulic_Nm}

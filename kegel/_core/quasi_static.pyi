@@ -250,6 +250,11 @@ class BearingData:
     @property
     def iterations(self) -> int: ...
 
+def loaded_lengths_m(model: BearingModel, data: BearingData) -> Annotated[NDArray[numpy.float64], dict(shape=(None, None), order='F')]:
+    """
+    Loaded length [m] of each roller's line contacts at a solved load distribution: the widths of the slices that carry load, one row per roller, columns (inner, outer).
+    """
+
 def solve_load_distribution(model: BearingModel, data: BearingData, loads: BearingLoads) -> int:
     """Solve the load distribution; 0 = converged."""
 

@@ -38,6 +38,11 @@ def aihara_thermal_factor(L: float) -> float:
 def thermal_loading_parameter(deta_dtheta_Pas_K: float, u_m_s: float, thermal_conductivity_W_mK: float) -> float:
     """L = |d eta/d theta| u^2 / k (Murch-Wilson, Aihara)."""
 
+def rolling_force_beyond_film_N_m(eta0_Pas: float, u_mean_m_s: float, R_m: float, g_m: float) -> float:
+    """
+    Rolling force per unit length [N/m] of the isoviscous-rigid film beyond the film height g (Reynolds, Biboulet-Houpert's rigid gap and flooded inlet X = -1): 6 eta0 u_m I(g/R), I(G) = sqrt(2/G - 1) + 2 asin(sqrt(G/2)) - 1 - pi/2, 0 for G >= 1; the contact / hydraulic boundary's cut.
+    """
+
 def biboulet_houpert_starvation_factor(S: float) -> float:
     """
     Biboulet-Houpert Part 1 Eq. 44: starved over flooded rolling force, S >= 2 (0: flooded).

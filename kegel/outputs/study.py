@@ -129,6 +129,12 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                     if case.get("friction_cut_at_g_Nm") is not None:
                         row.update(friction_torque_Nm=float(case["friction_cut_at_g_Nm"]),
                                    contact_film_limit_m=case.get("contact_film_limit_m"))
+                        # less the CFD's far field on the unloaded stretch of the lines, which
+                        # the contact convention does not count (kegel.coupling.split)
+                        wedge = float(case.get("unloaded_line_wedge_Nm") or 0.0)
+                        if loss is not None and wedge:
+                            loss -= wedge
+                            row.update(unloaded_line_wedge_Nm=wedge, hydraulic_torque_Nm=math.copysign(loss, w))
                         if case.get("friction_cut_at_g_converged") is False:
                             cut_failed = True
                             warns.append(Warning_("not_converged", f"the contact friction cut at the CFD's gap for "

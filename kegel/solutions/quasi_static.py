@@ -87,6 +87,9 @@ class LoadDistribution:
     roller_residual_max: float
     iterations: int
     runtime_s: float
+    #: loaded length of each roller's line contacts [m], one row per roller, columns (inner,
+    #: outer): the widths of the slices that carry load (the rest of the line is unloaded)
+    loaded_length_m: np.ndarray | None = None
 
     @property
     def loaded(self) -> np.ndarray:
@@ -172,6 +175,7 @@ def load_distribution(g: BearingGeometry, bearing: BearingData, material: Materi
         roller_residual_max=max(r.residual for r in rollers),
         iterations=data.iterations,
         runtime_s=time.perf_counter() - t0,
+        loaded_length_m=np.asarray(Q.loaded_lengths_m(model, data)),
     )
 
 

@@ -77,6 +77,27 @@ void bind_quasi_static(nb::module_& parent) {
       .def_ro("axial_force_N", &BearingData::axial_force_N)
       .def_ro("iterations", &BearingData::iterations);
   m.def(
+      "loaded_lengths_m",
+      [](const BearingModel& model, const BearingData& data) {
+        const std::size_t Z = data.rollers.size();
+        if (!data.has_solution || data.inner_lines.size() != Z || data.outer_lines.size() != Z)
+          throw std::invalid_argument("BearingData: no solved load distribution");
+        Eigen::MatrixXd out(static_cast<Eigen::Index>(Z), 2);
+        const double wi = model.inner_line().width_m(), wo = model.outer_line().width_m();
+        for (std::size_t k = 0; k < Z; ++k) {
+          const std::size_t j = data.symmetric ? 0 : k;  // an axisymmetric case solves roller 0 only
+          double li = 0.0, lo = 0.0;
+          for (double q : data.inner_lines[j].line_load_N_m) if (q > 0.0) li += wi;
+          for (double q : data.outer_lines[j].line_load_N_m) if (q > 0.0) lo += wo;
+          out(static_cast<Eigen::Index>(k), 0) = li;
+          out(static_cast<Eigen::Index>(k), 1) = lo;
+        }
+        return out;
+      },
+      "model"_a, "data"_a,
+      "Loaded length [m] of each roller's line contacts at a solved load distribution: the widths "
+      "of the slices that carry load, one row per roller, columns (inner, outer).");
+  m.def(
       "solve_load_distribution",
       [](const BearingModel& model, BearingData& data, const BearingLoads& loads) {
         const int status = solve_load_distribution(model, data, loads);

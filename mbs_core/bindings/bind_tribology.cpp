@@ -197,6 +197,17 @@ void bind_tribology(nb::module_& parent) {
       "deta_dtheta_Pas_K"_a, "u_m_s"_a, "thermal_conductivity_W_mK"_a,
       "L = |d eta/d theta| u^2 / k (Murch-Wilson, Aihara).");
   m.def(
+      "rolling_force_beyond_film_N_m",
+      [](double eta0, double u_m, double R, double g) {
+        pos("eta0_Pas", eta0); nonneg("u_mean_m_s", u_m); pos("R_m", R); pos("g_m", g);
+        return tribology::rolling_force_beyond_film_N_m(eta0, u_m, R, g);
+      },
+      "eta0_Pas"_a, "u_mean_m_s"_a, "R_m"_a, "g_m"_a,
+      "Rolling force per unit length [N/m] of the isoviscous-rigid film beyond the film height g "
+      "(Reynolds, Biboulet-Houpert's rigid gap and flooded inlet X = -1): 6 eta0 u_m I(g/R), "
+      "I(G) = sqrt(2/G - 1) + 2 asin(sqrt(G/2)) - 1 - pi/2, 0 for G >= 1; the contact / "
+      "hydraulic boundary's cut.");
+  m.def(
       "biboulet_houpert_starvation_factor",
       [](double S) { nonneg("S", S); return tribology::biboulet_houpert_starvation_factor(S); }, "S"_a,
       "Biboulet-Houpert Part 1 Eq. 44: starved over flooded rolling force, S >= 2 (0: flooded).");

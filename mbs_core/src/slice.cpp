@@ -178,19 +178,29 @@ void evaluate_slice(const SliceInput& in, const SurfacePair& sp, const ContactLu
       case RollingThermal::ZhuCheng: out.rolling_thermal_factor = out.thermal_factor; break;
       case RollingThermal::Off: out.rolling_thermal_factor = 1.0; break;
     }
-    // Inlet of the rolling force (Biboulet-Houpert Part 1, Eq. 44): the supply's ratio of this
-    // raceway, and the contact / hydraulic boundary g as S = g / h (the gap at the inlet meniscus
-    // over the flooded film; h the isothermal Moes film of the slice, see the parameter's note);
-    // the smaller S, the more restrictive inlet, wins.
-    double S = in.outer_ring ? v.inlet_gap_ratio_outer : v.inlet_gap_ratio_inner;
-    if (v.contact_film_limit_m > 0.0 && out.film_isothermal_m > 0.0) {
-      const double S_g = v.contact_film_limit_m / out.film_isothermal_m;
-      if (!(S > 0.0) || S_g < S) S = S_g;
+    // Inlet of the rolling force: the supply's meniscus as Biboulet-Houpert's starvation
+    // (Part 1, Eq. 44, S the gap at the meniscus over the flooded film). The contact / hydraulic
+    // boundary g removes the rolling force the film carries between g and the supply's meniscus
+    // (BH's flooded inlet X = -1 when flooded): rolling_force_beyond_film_N_m, isothermal and
+    // rigid out there. A supply whose meniscus lies within g (S_a <= g / h) leaves nothing to cut.
+    // h is the isothermal Moes film of the slice (see the parameter's note).
+    const double S_a = in.outer_ring ? v.inlet_gap_ratio_outer : v.inlet_gap_ratio_inner;
+    out.inlet_gap_ratio = S_a;
+    const double F_flooded = (1.0 - phi) * out.rolling_thermal_factor *
+                             tribology::biboulet_houpert_rolling_force_N(lub.eta0_Pas, uav, R, in.width_m, Q, E);
+    double F = F_flooded * tribology::biboulet_houpert_starvation_factor(S_a);
+    const double g = v.contact_film_limit_m;
+    if (g > 0.0 && out.film_isothermal_m > 0.0) {
+      const double S_g = g / out.film_isothermal_m;
+      if (!(S_a > 0.0) || S_g < S_a) {
+        double f_cut = tribology::rolling_force_beyond_film_N_m(lub.eta0_Pas, uav, R, g);
+        if (S_a > 0.0) f_cut -= tribology::rolling_force_beyond_film_N_m(lub.eta0_Pas, uav, R, S_a * out.film_isothermal_m);
+        F = std::max(0.0, F - f_cut * in.width_m);
+        out.inlet_gap_ratio = S_g;
+      }
     }
-    out.inlet_gap_ratio = S;
-    out.rolling_starvation_factor = tribology::biboulet_houpert_starvation_factor(S);
-    out.F_ehl_rolling_N = (1.0 - phi) * out.rolling_thermal_factor * out.rolling_starvation_factor *
-                          tribology::biboulet_houpert_rolling_force_N(lub.eta0_Pas, uav, R, in.width_m, Q, E);
+    out.rolling_starvation_factor = F_flooded > 0.0 ? F / F_flooded : 1.0;
+    out.F_ehl_rolling_N = F;
   }
   out.M_solid_rolling_Nm = phi * tribology::solid_rolling_moment_Nm(v.c_r, v.e_r, Q);
   out.M_hysteresis_Nm = tribology::hysteresis_moment_Nm(Q, v.a_v, b);

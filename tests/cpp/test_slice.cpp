@@ -228,8 +228,9 @@ TEST_F(Fixture, RollingForceAppliesTheThermalAndStarvationFactors) {
   EXPECT_THROW(kegel::FrictionParameters{bad}, std::invalid_argument);
 }
 
-// The supply is chosen by the slice's raceway, and the contact / hydraulic boundary g cuts the
-// inlet at S = g / h (h the isothermal flooded film of the slice); the smaller S wins.
+// The supply is chosen by the slice's raceway (Eq. 44 at its S); the contact / hydraulic
+// boundary g takes off the rolling force of the isoviscous-rigid film between g and the supply's
+// meniscus (the flooded inlet X = -1 without a supply), by hand: 6 eta0 u I(g / R).
 TEST_F(Fixture, InletSupplyByRingAndFilmLimit) {
   namespace tr = kegel::tribology;
   const double Q = 50.0, u = 5.0;
@@ -253,17 +254,47 @@ TEST_F(Fixture, InletSupplyByRingAndFilmLimit) {
   EXPECT_DOUBLE_EQ(run(10.0, 50.0, 0.0, true).inlet_gap_ratio, 50.0);
   EXPECT_NEAR(run(10.0, 50.0, 0.0, true).F_ehl_rolling_N,
               flooded.F_ehl_rolling_N * tr::biboulet_houpert_starvation_factor(50.0), 1e-12);
-  // the film limit alone: S = g / h_isothermal, with Eq. 44 by hand at that S
+  // the far field by hand: I(G) = sqrt(2/G - 1) + 2 asin(sqrt(G/2)) - 1 - pi/2
+  const double R = 7.5e-3, w = 0.7e-3, eta0 = state.eta0_Pas;
+  auto far = [&](double gap) {
+    const double G = gap / R;
+    if (G >= 1.0) return 0.0;
+    return 6.0 * eta0 * u * (std::sqrt(2.0 / G - 1.0) + 2.0 * std::asin(std::sqrt(G / 2.0)) - 1.0 - M_PI / 2.0);
+  };
+  EXPECT_NEAR(tr::rolling_force_beyond_film_N_m(eta0, u, R, 0.4e-3), far(0.4e-3), 1e-12 * far(0.4e-3));
+  EXPECT_EQ(tr::rolling_force_beyond_film_N_m(eta0, u, R, R), 0.0);  // beyond the flooded inlet
+  // the film limit alone: the far field beyond g comes off the flooded force
   const double h = flooded.film_isothermal_m;
   const double g = 100.0 * h;
   const auto cut = run(0.0, 0.0, g, false);
   EXPECT_NEAR(cut.inlet_gap_ratio, 100.0, 1e-9);
-  const double eq44 = (1e4 + 162.8e2) / (1e4 + 193.1e2 + 1257.0);  // 0.8598
-  EXPECT_NEAR(cut.rolling_starvation_factor, eq44, 1e-12);
-  EXPECT_NEAR(cut.F_ehl_rolling_N, eq44 * flooded.F_ehl_rolling_N, 1e-12);
-  // the more restrictive inlet wins: supply 50 < 100 from g; supply 500 > 100 from g
-  EXPECT_DOUBLE_EQ(run(50.0, 0.0, g, false).inlet_gap_ratio, 50.0);
-  EXPECT_NEAR(run(500.0, 0.0, g, false).inlet_gap_ratio, 100.0, 1e-9);
+  EXPECT_NEAR(cut.F_ehl_rolling_N, flooded.F_ehl_rolling_N - w * far(g), 1e-12);
+  EXPECT_NEAR(cut.rolling_starvation_factor, cut.F_ehl_rolling_N / flooded.F_ehl_rolling_N, 1e-12);
+  EXPECT_GT(cut.F_ehl_rolling_N, 0.0);
+  // a supply within g (50 < 100) leaves nothing to cut: Eq. 44 at 50 alone
+  const auto s50 = run(50.0, 0.0, g, false);
+  EXPECT_DOUBLE_EQ(s50.inlet_gap_ratio, 50.0);
+  EXPECT_NEAR(s50.F_ehl_rolling_N, flooded.F_ehl_rolling_N * tr::biboulet_houpert_starvation_factor(50.0), 1e-12);
+  // a supply beyond g (500 > 100): Eq. 44 at 500, less the far field between g and 500 h
+  const auto s500 = run(500.0, 0.0, g, false);
+  EXPECT_NEAR(s500.inlet_gap_ratio, 100.0, 1e-9);
+  EXPECT_NEAR(s500.F_ehl_rolling_N,
+              flooded.F_ehl_rolling_N * tr::biboulet_houpert_starvation_factor(500.0) - w * (far(g) - far(500.0 * h)),
+              1e-12);
+  // a cut that would take more than the force leaves none (not a negative rolling force): a
+  // lightly loaded slice (1 N, small force) cut at 1.2 times its film
+  auto light = [&](double gap) {
+    auto v = params();
+    v.rolling_thermal = kegel::RollingThermal::Off;
+    v.contact_film_limit_m = gap;
+    kegel::SliceResult r;
+    kegel::evaluate_slice(slice(1.0, u, u), sp, state, kegel::FrictionParameters(v), r);
+    return r;
+  };
+  const auto light0 = light(0.0);
+  ASSERT_GT(light0.F_ehl_rolling_N, 0.0);
+  ASSERT_GT(w * far(1.2 * light0.film_isothermal_m), light0.F_ehl_rolling_N);
+  EXPECT_EQ(light(1.2 * light0.film_isothermal_m).F_ehl_rolling_N, 0.0);
   // sliding friction and film do not change with the inlet of the rolling force
   EXPECT_DOUBLE_EQ(cut.film_m, flooded.film_m);
   EXPECT_DOUBLE_EQ(cut.F_ehl_sliding_N[0], flooded.F_ehl_sliding_N[0]);

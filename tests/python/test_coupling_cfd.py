@@ -316,7 +316,7 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     uncut one's by the share of the inlet within g, 2.8 % flooded at this point in the gap
     study; 0.2 % at the shaft centre, where the supply already starves the inlets) and the
     hydraulic loss is the CFD's plus the analytic thin films (the oil bath's with their supply
-    factors)."""
+    factors), less the CFD's far field on the unloaded stretch of the lines."""
     f, d = next((f, d) for f, d in runs if f"2000rpm_{level}" in str(f))
     loss = d["loss_torque_at_shaft_Nm"]
     real = d["point"].get("gap_ratio") is not None
@@ -326,8 +326,14 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     bnd = qs["hydraulic"]["boundary"]
     Dw = kegel.derive_geometry(kegel.load_bearing("32208"), kegel.load_material("bearing_steel")).roller_mean_diameter_m
     assert bnd["contact_film_limit_m"] == pytest.approx(0.08 * Dw if real else 0.0, rel=1e-12)
-    assert qs["hydraulic_torque_Nm"] == pytest.approx(loss + thin, rel=1e-12)
-    assert qs["total_torque_Nm"] == pytest.approx(qs["friction_torque_Nm"] + loss + thin, rel=1e-12)
+    # less the CFD's far field on the unloaded stretch of the lines (kegel.coupling.split): at
+    # 1 kN about half of each line carries no load; the term is a small part of the CFD's loss
+    # (flooded; not estimated in an oil bath)
+    wedge = bnd["unloaded_line_wedge_Nm"]
+    assert (0.0 < wedge < 0.2 * loss) if level == "flooded" else wedge == 0.0
+    assert bnd["hydraulic_Nm"] == pytest.approx(loss + thin - wedge, rel=1e-12)
+    assert qs["hydraulic_torque_Nm"] == pytest.approx(loss + thin - wedge, rel=1e-12)
+    assert qs["total_torque_Nm"] == pytest.approx(qs["friction_torque_Nm"] + loss + thin - wedge, rel=1e-12)
     if real:  # the cut: the same scene with the correlation instead solves the uncut contact
         uncut = _run(tmp_path, "uncut", _scene("quasi_static", level=level).replace(
             f'hydraulic = "cfd"\ncfd_results = "{CFD}"', 'hydraulic = "none"'))
@@ -338,7 +344,9 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     rings = -(d["torques_Nm"]["inner_ring"]["total"] + d["torques_Nm"]["shaft"]["total"])
     assert h["inner_ring_and_shaft_Nm"] == pytest.approx(rings, rel=1e-12)
     assert h["thin_films_Nm"] == pytest.approx(thin, rel=1e-12, abs=0.0)
-    assert dyn["hydraulic_torque_Nm"] == pytest.approx(h["roller_drag_on_the_bodies_Nm"] + rings + thin, rel=1e-12)
+    assert h["unloaded_line_wedge_Nm"] == pytest.approx(wedge, rel=1e-6)  # the same load distribution
+    assert dyn["hydraulic_torque_Nm"] == pytest.approx(h["roller_drag_on_the_bodies_Nm"] + rings + thin
+                                                       - h["unloaded_line_wedge_Nm"], rel=1e-12)
     assert h["bodies_share_in_the_cfd_Nm"] + rings == pytest.approx(loss, rel=1e-12)
     slip = abs(dyn["cage_slip"])
     assert abs(h["roller_drag_on_the_bodies_Nm"] / h["bodies_share_in_the_cfd_Nm"] - 1) <= 2.1 * slip + 2e-3

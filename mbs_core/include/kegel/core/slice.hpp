@@ -47,9 +47,10 @@ class FrictionParameters {
     double inlet_gap_ratio_inner = 0.0;
     double inlet_gap_ratio_outer = 0.0;
     /// The contact / hydraulic boundary g [m]: the contact model owns the oil within film height
-    /// g of each line contact, so its rolling force is cut off where the gap reaches g
-    /// (Biboulet-Houpert Eq. 44 with S = g / h, h the slice's isothermal flooded film);
-    /// combined with the supply, the more restrictive inlet (the smaller S) wins. 0 = no cut-off.
+    /// g of each line contact, so its rolling force loses the far field of the film beyond g
+    /// (tribology::rolling_force_beyond_film_N_m, between g and the supply's meniscus; nothing
+    /// when the supply's meniscus lies within g, S_supply <= g / h, h the slice's isothermal
+    /// flooded film). 0 = no cut-off.
     double contact_film_limit_m = 0.0;
   };
   /// True when Eq. 9 (compression heating of the contact lubricant) is active.
@@ -136,8 +137,8 @@ struct SliceResult {
   // Rolling resistance (magnitudes; each opposes the rolling of both surfaces)
   double F_ehl_rolling_N = 0.0;       ///< (1 - phi) x thermal x starvation x Biboulet-Houpert (the seed's Eq. 16, corrected)
   double rolling_thermal_factor = 1.0;  ///< thermal factor applied to the EHL rolling force
-  double rolling_starvation_factor = 1.0;  ///< starvation factor applied to the EHL rolling force
-  double inlet_gap_ratio = 0.0;       ///< S of Eq. 44 applied (supply or film limit, the smaller); 0 = flooded
+  double rolling_starvation_factor = 1.0;  ///< EHL rolling force over its flooded value (supply and film limit)
+  double inlet_gap_ratio = 0.0;       ///< the inlet's S: the supply's, or g / h where the film limit cuts; 0 = flooded
   double M_solid_rolling_Nm = 0.0;    ///< phi x Eq. 19
   double M_hysteresis_Nm = 0.0;       ///< Eq. 20 (material, not weighted)
   // Normal direction
