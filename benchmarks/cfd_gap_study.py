@@ -54,7 +54,7 @@ def contact_loss_Nm(gap_m: float) -> dict:
     return {k: r[k] for k in ("friction_torque_Nm", "ehl_rolling_torque_Nm", "converged") if k in r}
 
 
-def unloaded_wedge_Nm(gap_m: float) -> dict:
+def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM) -> dict:
     """The CFD's far field beyond ``gap_m`` on the unloaded stretch of the raceway lines at the
     study point's load distribution (kegel.coupling.split.unloaded_line_wedge): what contact +
     CFD counts that the contact model's convention does not."""
@@ -68,9 +68,9 @@ def unloaded_wedge_Nm(gap_m: float) -> dict:
     g = derive_geometry(b, m)
     dist = load_distribution(g, b, m, axial_N=AXIAL_LOAD_N)
     eta = lubricant_state("FVA3", TEMPERATURE_K).dynamic_viscosity_Pas
-    w = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=SPEED_RPM * math.pi / 30,
+    w = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
                             loaded_length_m=dist.loaded_length_m, film_limit_m=gap_m)
-    whole = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=SPEED_RPM * math.pi / 30,
+    whole = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
                                 loaded_length_m=0.0 * dist.loaded_length_m, film_limit_m=gap_m)
     return {**w.as_dict(), "whole_line_Nm": whole.torque_Nm}
 

@@ -2,8 +2,9 @@
 
 For each speed: contact + CFD (the contact's rolling force cut off where the film reaches the
 gap g that the CFD opens, :func:`kegel.runner.film_limit.contact_loss_at_film_limit`, plus the CFD loss of a
-flooded one-pitch sector at g with ``--cells`` cells across each gap, plus the analytic
-thin-film terms of the films thinner than the CFD's clearance), contact + Liebrecht and
+flooded one-pitch sector at g with ``--cells`` cells across each gap, less the CFD's far field on
+the unloaded stretch of the lines (:mod:`kegel.coupling.split`), plus the analytic thin-film
+terms of the films thinner than the CFD's clearance), contact + Liebrecht and
 contact + SKF drag (the uncut flooded contact, the correlation's whole hydraulic loss). The CFD
 cases are those of the gap study (``benchmarks/cfd_gap_study.py``, same folder and names), so the
 2000 rpm case is shared and every case resumes where a session left it.
@@ -28,7 +29,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from cfd_gap_study import AXIAL_LOAD_N, CASES, TEMPERATURE_K, run_one  # noqa: E402  (one study point)
+from cfd_gap_study import AXIAL_LOAD_N, CASES, TEMPERATURE_K, run_one, unloaded_wedge_Nm  # noqa: E402  (one study point)
 
 OUT = HERE / "results" / "cfd_three_answers.json"
 
@@ -84,7 +85,11 @@ def write(rows: list[dict], command: str) -> None:
     for r in rows:
         if "thin_films_Nm" not in r:
             r["thin_films_Nm"] = thin_films_Nm(r)
-        r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"]
+        # the contact side afresh (the cut's law may have changed since the CFD ran), and the CFD's
+        # far field on the unloaded stretch of the lines, which the contact convention does not count
+        r.update(correlations_and_contact(r["speed_rpm"], r["gap_m"]))
+        r["unloaded_line_wedge_Nm"] = unloaded_wedge_Nm(r["gap_m"], r["speed_rpm"])["torque_Nm"]
+        r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"] - r["unloaded_line_wedge_Nm"]
         r["contact_plus_cfd_plus_thin_films_Nm"] = r["contact_plus_cfd_Nm"] + r["thin_films_Nm"]
         r["contact_plus_liebrecht_Nm"] = r["contact_uncut_Nm"] + r["liebrecht_Nm"]
         r["contact_plus_skf_Nm"] = r["contact_uncut_Nm"] + r["skf_drag_Nm"]
@@ -106,7 +111,7 @@ def plot(rows: list[dict], path: Path) -> None:
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     ax.plot(n, [1e3 * r["contact_plus_cfd_plus_thin_films_Nm"] for r in rows], "o-",
             label="contact (cut at g) + CFD + thin films")
-    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o--", label="contact (cut at g) + CFD")
+    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o--", label="contact (cut at g) + CFD - wedge")
     ax.plot(n, [1e3 * r["contact_plus_liebrecht_Nm"] for r in rows], "s--", label="contact + Liebrecht")
     ax.plot(n, [1e3 * r["contact_plus_skf_Nm"] for r in rows], "^--", label="contact + SKF drag")
     ax.plot(n, [1e3 * r["cfd_loss_Nm"] for r in rows], "o:", label="CFD alone (beyond g)")

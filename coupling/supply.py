@@ -48,9 +48,10 @@ page (formula images) could not be read, see docs/models.md.
 
 The contact / hydraulic boundary g (``model.contact_film_limit``): the contact model owns the oil
 within film height ``g`` of each line contact and a CFD owns the rest, so the contact's rolling
-force is that of an inlet cut at the gap ``g``: Eq. 44 with ``S = g / h``, ``h`` the slice's
-flooded isothermal film. With a supply as well, the more restrictive inlet (the smaller ``S``)
-wins, slice by slice (``mbs_core/src/slice.cpp``). :func:`kegel.runner.film_limit.contact_loss_at_film_limit` gives the
+force loses what the film beyond ``g`` carries: Reynolds' far field, ``6 eta0 u_m I(g / R)`` per
+unit length (``kegel._core.tribology.rolling_force_beyond_film_N_m``; between ``g`` and the
+supply's meniscus when there is one, nothing when the meniscus lies within ``g``), slice by slice
+(``mbs_core/src/slice.cpp``; docs/models.md). :func:`kegel.runner.film_limit.contact_loss_at_film_limit` gives the
 contact friction of a point at a given ``g`` (the contact half of the CFD gap study).
 """
 

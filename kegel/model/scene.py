@@ -190,7 +190,8 @@ class Fidelity:
     contact_film_limit_m
         The contact / hydraulic boundary g [m] (``model.contact_film_limit = "0.2 mm"``): the
         contact model owns the oil within film height g of each line contact and cuts its rolling
-        force off there (Eq. 44 with S = g / h); 0 (default) = no cut-off.
+        force off there (Reynolds' far field beyond g taken off, docs/models.md); 0 (default) =
+        no cut-off.
     """
 
     name: str

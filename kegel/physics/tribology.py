@@ -78,7 +78,8 @@ class FrictionData:
     inlet_gap_ratio_inner: float = 0.0
     inlet_gap_ratio_outer: float = 0.0
     #: The contact / hydraulic boundary g [m] (``model.contact_film_limit``): the rolling force is
-    #: cut off where the film reaches g (Eq. 44 with S = g / h per slice); 0 = no cut-off.
+    #: cut off where the film reaches g (Reynolds' far field beyond g taken off per slice,
+    #: docs/models.md); 0 = no cut-off.
     contact_film_limit_m: float = 0.0
 
     def model_options(self) -> dict[str, Any]:
