@@ -149,11 +149,14 @@ def plot(rows: list[dict], path: Path) -> None:
                 label="contact + CFD - far field on the unloaded stretch")
     # the mesh study at the default gap: the other discretisations, as markers
     marks = {("tiny", 6): "^", ("small", 3): "v", ("fine", 3): "P"}
+    colours = {("tiny", 6): "C4", ("small", 3): "C3", ("fine", 3): "C5"}
+    labelled: set = set()
     for r in rows:
         key = (r["mesh"], r["cells_across_gap"])
         if r["sector"] and key in marks:
-            ax.plot([r["inv_sqrt_gap"]], [1e3 * r["cfd_loss_Nm"]], marks[key], ms=7,
-                    label=f"CFD ({key[0]}, {key[1]} cells across)")
+            ax.plot([r["inv_sqrt_gap"]], [1e3 * r["cfd_loss_Nm"]], marks[key], ms=7, color=colours[key],
+                    label=None if key in labelled else f"CFD ({key[0]}, {key[1]} cells across)")
+            labelled.add(key)
             if r.get("sum_consistent_Nm") is not None:
                 ax.plot([r["inv_sqrt_gap"]], [1e3 * r["sum_consistent_Nm"]], marks[key], ms=7, color="0.4")
     ax.set_xlabel("1 / sqrt(g / D_w)")

@@ -75,13 +75,21 @@ def test_finding1_the_study_example_runs_in_one_command(tmp_path):
              json.loads((REPO / "benchmarks" / "results" / "cfd_three_answers.json").read_text())["rows"]}
     for n, r3 in three.items():
         row = by[(n, "flooded", "cfd")]
-        assert float(row["hydraulic_torque_Nm"]) == pytest.approx(r3["cfd_loss_Nm"] + r3["thin_films_Nm"], rel=1e-9)
+        # less the CFD's far field on the unloaded stretch of the lines (kegel.coupling.split), from
+        # this run's load distribution (fast fidelity: fewer slices, so the loaded length is
+        # quantised differently from the stored study's default)
+        wedge = r3["unloaded_line_wedge_Nm"]
+        assert 0.0 < wedge < 0.3 * r3["cfd_loss_Nm"]
+        assert float(row["hydraulic_torque_Nm"]) == pytest.approx(r3["cfd_loss_Nm"] + r3["thin_films_Nm"] - wedge,
+                                                                  abs=0.15 * wedge)
         assert float(row["contact_film_limit_m"]) == pytest.approx(r3["gap_m"], rel=1e-9)
         # the contact is cut at g by the share the stored study found (fast fidelity here, default
         # there: the levels differ by up to 2 %, the cut's share by less than 0.5 %)
         cut = float(row["friction_torque_Nm"]) / float(by[(n, "flooded", "liebrecht")]["friction_torque_Nm"])
         assert cut == pytest.approx(r3["contact_cut_at_g_Nm"] / r3["contact_uncut_Nm"], abs=0.005)
-        assert float(row["total_torque_Nm"]) == pytest.approx(r3["contact_plus_cfd_plus_thin_films_Nm"], rel=0.025)
+        # (the study's fast fidelity puts the uncut contact 0.5 / 1.0 / 2.1 / 3.6 % above the
+        # default's at 500 / 1000 / 2000 / 4000 rpm; the totals then differ by up to 2.6 %)
+        assert float(row["total_torque_Nm"]) == pytest.approx(r3["contact_plus_cfd_plus_thin_films_Nm"], rel=0.03)
     # the shaft-centre CFD rows too: the real rollers in the whole bearing, the oil bath's thin
     # films (benchmarks/results/cfd_oil_bath_real_rollers.json, docs/cfd.md)
     bath = {round(r["speed_rpm"]): r for r in json.loads(
@@ -116,11 +124,12 @@ def test_the_readme_three_answers_are_the_stored_study():
     benchmarks/results/cfd_three_answers.json holds, cell by cell."""
     rows = {round(r["speed_rpm"]): r for r in
             json.loads((REPO / "benchmarks" / "results" / "cfd_three_answers.json").read_text())["rows"]}
-    keys = ("contact_cut_at_g_Nm", "cfd_loss_Nm", "thin_films_Nm", "contact_plus_cfd_plus_thin_films_Nm",
-            "contact_uncut_Nm", "liebrecht_Nm", "contact_plus_liebrecht_Nm", "skf_drag_Nm", "contact_plus_skf_Nm")
+    keys = ("contact_cut_at_g_Nm", "cfd_loss_Nm", "unloaded_line_wedge_Nm", "thin_films_Nm",
+            "contact_plus_cfd_plus_thin_films_Nm", "contact_uncut_Nm", "liebrecht_Nm", "contact_plus_liebrecht_Nm",
+            "skf_drag_Nm", "contact_plus_skf_Nm")
     table = {}
     for line in README.read_text().splitlines():
-        m = re.match(r"\| (\d+) \|((?: [^|]+ \|){9})$", line)
+        m = re.match(r"\| (\d+) \|((?: [^|]+ \|){10})$", line)
         if m:
             table[int(m.group(1))] = [float(c.strip().strip("*")) for c in m.group(2).split("|")[:-1]]
     assert sorted(table) == sorted(rows) == [500, 1000, 2000, 4000]
