@@ -49,6 +49,9 @@ def main(argv: list[str]) -> int:
     import kegel
     from kegel.coupling import find_cfd_result, read_cfd_results
     from kegel.coupling.cfd_results import cfd_boundary
+    from kegel.coupling.split import unloaded_line_wedge
+    from kegel.model.lubricant import lubricant_state
+    from kegel.solutions.quasi_static import load_distribution
     from kegel.run import run_scene
     from kegel.scene import load_scene
     from kegel.tribology import cage_speed_rad_s
@@ -83,6 +86,16 @@ def main(argv: list[str]) -> int:
                                          oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= b.outer_diameter_m,
                                          results=runs)
                 bnd = cfd_boundary(cfd, g.roller_mean_diameter_m, source=str(f))
+                if cfd["point"].get("oil_level_m") is None and bnd.contact_film_limit_m:
+                    # flooded: less the CFD's far field on the unloaded stretch of the lines, as
+                    # hydraulic = "cfd" takes it off (kegel.coupling.split)
+                    op = first.operating_points[0]
+                    dist = load_distribution(g, b, first.material, axial_N=op.axial_load_N,
+                                             slices=first.fidelity.slices, method=first.fidelity.slice_model)
+                    eta = lubricant_state(first.lubricant, op.temperature_K).dynamic_viscosity_Pas
+                    bnd = bnd.with_unloaded_line_wedge(unloaded_line_wedge(
+                        g, viscosity_Pas=eta, inner_speed_rad_s=w, loaded_length_m=dist.loaded_length_m,
+                        film_limit_m=bnd.contact_film_limit_m).torque_Nm)
                 path.write_text(_scene_text(base, level=level, flow_forces=ff, axial_load=args.axial_load,
                                             speed=args.speed, duration_ms=duration_ms, out=out, threads=args.threads,
                                             film_limit_m=bnd.contact_film_limit_m))
@@ -101,6 +114,7 @@ def main(argv: list[str]) -> int:
                              "bodies_Nm": h.get("roller_drag_on_the_bodies_Nm"),
                              "rings_Nm": h.get("inner_ring_and_shaft_Nm"), "cfd_loss_Nm": cfd_loss,
                              "thin_films_Nm": bnd.thin_films_Nm, "contact_film_limit_m": bnd.contact_film_limit_m,
+                             "unloaded_line_wedge_Nm": bnd.unloaded_line_wedge_Nm,
                              "cfd_geometry": bnd.geometry,
                              "cfd_bodies_share_Nm": cfd_loss + cfd["torques_Nm"]["inner_ring"]["total"]
                              + cfd["torques_Nm"]["shaft"]["total"],
@@ -119,13 +133,16 @@ def main(argv: list[str]) -> int:
     atomic_write_json(out_file, meta)
     print(f"32208, Fa = {args.axial_load}, {args.speed}, 50 degC, {duration_ms:.0f} ms ({args.revolutions:g} cage "
           f"revolutions), steady means over the dynamic solution's window\n")
-    print("| oil level | flow forces | cage slip [%] | friction [mN m] | hydraulic [mN m] (bodies + rings + thin films) | "
+    print("| oil level | flow forces | cage slip [%] | friction [mN m] | hydraulic [mN m] (bodies + rings + thin films - wedge) | "
           "total [mN m] |")
     print("| --- | --- | --- | --- | --- | --- |")
     for r in rows:
         thin = f" + {1e3 * r['thin_films_Nm']:.2f}" if r["thin_films_Nm"] else ""
+        if r.get("unloaded_line_wedge_Nm"):
+            thin += f" - {1e3 * r['unloaded_line_wedge_Nm']:.2f}"
         split = (f" ({1e3 * r['bodies_Nm']:.2f} + {1e3 * r['rings_Nm']:.2f}{thin})" if r["flow_forces"] else
-                 " (CFD loss" + (" + thin films" if thin else "") + " added)")
+                 " (CFD loss" + (" + thin films" if thin else "") + (" - wedge" if r.get("unloaded_line_wedge_Nm") else "")
+                 + " added)")
         print(f"| {r['oil_level'].replace('_', ' ')} | {'on' if r['flow_forces'] else 'off'} | "
               f"{100 * r['cage_slip']:.3f} | {1e3 * r['friction_torque_Nm']:.2f} | "
               f"{1e3 * r['hydraulic_torque_Nm']:.2f}{split} | {1e3 * r['total_torque_Nm']:.2f} |")

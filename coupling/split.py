@@ -60,21 +60,6 @@ class UnloadedLineWedge:
         return asdict(self)
 
 
-def _line_point(g: BearingGeometry, xi_m: float, contact: str, inner_speed_rad_s: float,
-                cage_speed_rad_s: float) -> tuple[float, float]:
-    """Reduced radius [m] in the rolling direction and mean surface speed [m/s] in pure rolling
-    at ``xi_m`` along the roller axis from its mid-point (the cage frame)."""
-    beta, gamma = g.roller_axis_angle_rad, g.roller_half_angle_rad
-    side = -1.0 if contact == "inner" else 1.0
-    rho = 0.5 * g.roller_mean_diameter_m + xi_m * math.tan(gamma)
-    r_ring = 0.5 * g.pitch_diameter_m + xi_m * math.sin(beta) + side * rho * math.cos(beta)
-    R_roller = rho / math.cos(gamma)
-    R_ring = r_ring / math.cos(g.cone_angle_rad if contact == "inner" else g.cup_angle_rad)
-    R = R_roller * R_ring / (R_ring + R_roller) if contact == "inner" else R_roller * R_ring / (R_ring - R_roller)
-    omega_ring = inner_speed_rad_s - cage_speed_rad_s if contact == "inner" else -cage_speed_rad_s
-    return R, abs(omega_ring) * r_ring
-
-
 def unloaded_line_wedge(g: BearingGeometry, *, viscosity_Pas: float, inner_speed_rad_s: float,
                         loaded_length_m: np.ndarray, film_limit_m: float) -> UnloadedLineWedge:
     """The CFD's far field beyond the film limit g over the unloaded stretch of every raceway
@@ -105,7 +90,7 @@ def unloaded_line_wedge(g: BearingGeometry, *, viscosity_Pas: float, inner_speed
         A non-positive g, viscosity or speed, or loaded lengths outside ``[0, roller length]``.
     """
     from .. import _core
-    from ..physics.tribology import cage_speed_rad_s
+    from ..physics.tribology import cage_speed_rad_s, raceway_line_point
 
     for key, v in (("film_limit_m", film_limit_m), ("viscosity_Pas", viscosity_Pas)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
@@ -123,6 +108,7 @@ def unloaded_line_wedge(g: BearingGeometry, *, viscosity_Pas: float, inner_speed
     parts: dict[str, float] = {}
     fractions: dict[str, float] = {}
     for col, contact in enumerate(("inner", "outer")):
+        omega_ring = inner_speed_rad_s - wc if contact == "inner" else -wc
         P = 0.0
         for loaded in ll[:, col]:
             unloaded = max(L - loaded, 0.0)
@@ -130,7 +116,8 @@ def unloaded_line_wedge(g: BearingGeometry, *, viscosity_Pas: float, inner_speed
                 continue
             xi = 0.5 * L - 0.25 * unloaded  # the middle of each end's unloaded half
             for s in (-1.0, 1.0):
-                R, u = _line_point(g, s * xi, contact, inner_speed_rad_s, wc)
+                R, r_ring = raceway_line_point(g, s * xi, contact)
+                u = abs(omega_ring) * r_ring  # pure rolling, the cage frame
                 P += 2.0 * far(viscosity_Pas, u, R, film_limit_m) * u * 0.5 * unloaded
         parts[contact] = P / inner_speed_rad_s
         fractions[contact] = float(1.0 - ll[:, col].sum() / (L * len(ll)))

@@ -37,6 +37,7 @@ __all__ = [
     "axial_roller_loads",
     "cage_speed_rad_s",
     "evaluate_raceway_contact",
+    "raceway_line_point",
     "MAX_CONTACT_PRESSURE_PA",
 ]
 
@@ -234,6 +235,20 @@ _RESULT_FIELDS = (
 MAX_CONTACT_PRESSURE_PA = 4.0e9
 
 
+def raceway_line_point(g: BearingGeometry, xi_m: float, contact: str) -> tuple[float, float]:
+    """Reduced radius ``R'`` [m] in the rolling direction and ring radius [m] of a raceway line
+    contact at ``xi_m`` along the roller axis from its mid-point (apex-matched nominal geometry;
+    ``contact`` ``"inner"`` or ``"outer"``)."""
+    beta, gamma = g.roller_axis_angle_rad, g.roller_half_angle_rad
+    side = -1.0 if contact == "inner" else 1.0
+    rho = 0.5 * g.roller_mean_diameter_m + xi_m * math.tan(gamma)
+    r_ring = 0.5 * g.pitch_diameter_m + xi_m * math.sin(beta) + side * rho * math.cos(beta)
+    R_roller = rho / math.cos(gamma)
+    R_ring = r_ring / math.cos(g.cone_angle_rad if contact == "inner" else g.cup_angle_rad)
+    R = R_roller * R_ring / (R_ring + R_roller) if contact == "inner" else R_roller * R_ring / (R_ring - R_roller)
+    return R, r_ring
+
+
 def evaluate_raceway_contact(
     g: BearingGeometry,
     bearing: BearingData,
@@ -300,25 +315,17 @@ def evaluate_raceway_contact(
     state = T.make_contact_lubricant_state(lubricant.core, temperature_K)
     fp = friction.core(lubricant)
 
-    beta, gamma = g.roller_axis_angle_rad, g.roller_half_angle_rad
-    r_M = 0.5 * g.pitch_diameter_m
     L_eff = g.roller_effective_length_m
     omega_c = cage_speed_rad_s(g, shaft_speed_rad_s)
     omega_ring = shaft_speed_rad_s - omega_c if contact == "inner" else -omega_c  # in the cage frame
-    ring_angle = g.cone_angle_rad if contact == "inner" else g.cup_angle_rad
-    side = -1.0 if contact == "inner" else 1.0
-    width = L_eff / slices / math.cos(gamma)  # along the roller generator
+    width = L_eff / slices / math.cos(g.roller_half_angle_rad)  # along the roller generator
 
     rows: list[dict[str, float]] = []
     tot = dict.fromkeys(
         ("F_ehl_sliding_x_N", "F_solid_sliding_x_N", "F_ehl_rolling_N", "M_solid_rolling_Nm", "M_hysteresis_Nm",
          "P_ehl_sliding_W", "P_solid_sliding_W", "P_ehl_rolling_W", "P_solid_rolling_W", "P_hysteresis_W"), 0.0)
     for xi in (np.arange(slices) + 0.5) / slices * L_eff - 0.5 * L_eff:
-        rho = 0.5 * g.roller_mean_diameter_m + xi * math.tan(gamma)
-        r_ring = r_M + xi * math.sin(beta) + side * rho * math.cos(beta)
-        R_roller = rho / math.cos(gamma)
-        R_ring = r_ring / math.cos(ring_angle)
-        R = R_roller * R_ring / (R_ring + R_roller) if contact == "inner" else R_roller * R_ring / (R_ring - R_roller)
+        R, r_ring = raceway_line_point(g, float(xi), contact)
         u_mean = abs(omega_ring) * r_ring
         s = T.SliceInput()
         s.load_N = load_N / slices
