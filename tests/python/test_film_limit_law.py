@@ -165,3 +165,36 @@ def test_the_unloaded_wedge_rejects_bad_input(point, kw, key):
             "loaded_length_m": point["dist"].loaded_length_m, "film_limit_m": 0.2e-3, **kw}
     with pytest.raises(KegelInputError, match=key):
         unloaded_line_wedge(point["g"], **args)
+
+
+# -- properties over open-ended inputs ---------------------------------------------------------
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=200, deadline=None)
+@given(eta=st.floats(1e-4, 10.0), u=st.floats(1e-3, 100.0), R=st.floats(1e-4, 0.1),
+       G1=st.floats(1e-7, 0.999), G2=st.floats(1e-7, 0.999))
+def test_the_far_field_is_positive_linear_and_falls_with_the_gap(eta, u, R, G1, G2):
+    f1 = T.rolling_force_beyond_film_N_m(eta, u, R, G1 * R)
+    f2 = T.rolling_force_beyond_film_N_m(eta, u, R, G2 * R)
+    assert math.isfinite(f1) and f1 >= 0.0
+    # linear in eta0 u_m: the same G with twice the viscosity gives twice the force
+    assert T.rolling_force_beyond_film_N_m(2 * eta, u, R, G1 * R) == pytest.approx(2 * f1, rel=1e-12)
+    # a larger gap leaves less beyond it (the cut moves out towards the flooded inlet)
+    if G1 < G2:
+        assert f1 >= f2
+    # never more than the parabola's far field from infinity, 6 eta u sqrt(2 R / g) (the circle
+    # from X = -1 takes less: I(G) <= sqrt(2 / G) - 1)
+    assert f1 <= 6 * eta * u * math.sqrt(2 / G1)
+
+
+@settings(max_examples=25, deadline=None)
+@given(frac=st.lists(st.floats(0.0, 1.0), min_size=2, max_size=2), gap_mm=st.floats(0.01, 2.0))
+def test_the_unloaded_wedge_grows_with_the_unloaded_length(point, frac, gap_mm):
+    g, L = point["g"], point["g"].roller_length_m
+    lo, hi = sorted(frac)
+    w_short = _wedge(point, np.full((g.roller_count, 2), hi * L), gap_mm * 1e-3).torque_Nm   # less unloaded
+    w_long = _wedge(point, np.full((g.roller_count, 2), lo * L), gap_mm * 1e-3).torque_Nm
+    assert 0.0 <= w_short <= w_long * (1 + 1e-12) + 1e-15
