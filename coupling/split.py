@@ -99,10 +99,14 @@ def unloaded_line_wedge(g: BearingGeometry, *, viscosity_Pas: float, inner_speed
         raise KegelInputError("<argument>", "inner_speed_rad_s", inner_speed_rad_s, "a positive speed in rad/s")
     L = g.roller_length_m
     ll = np.asarray(loaded_length_m, dtype=float)
-    if ll.ndim != 2 or ll.shape[1] != 2 or not np.all(np.isfinite(ll)) or np.any(ll < 0) \
-            or np.any(ll > L * (1 + 1e-9)):
-        raise KegelInputError("<argument>", "loaded_length_m", ll.shape,
-                              f"an array (rollers, 2) of lengths in [0, {L:g} m]")
+    if ll.ndim != 2 or ll.shape[1] != 2:
+        raise KegelInputError("<argument>", "loaded_length_m", f"an array of shape {ll.shape}",
+                              "an array of shape (rollers, 2): the inner and outer loaded lengths")
+    bad = ~(np.isfinite(ll) & (ll >= 0) & (ll <= L * (1 + 1e-9)))
+    if bad.any():
+        k, c = np.argwhere(bad)[0]
+        raise KegelInputError("<argument>", f"loaded_length_m[{k}, {c}]", float(ll[k, c]),
+                              f"a length in [0, {L:g} m] (the roller length)")
     wc = cage_speed_rad_s(g, inner_speed_rad_s)
     far = _core.tribology.rolling_force_beyond_film_N_m
     parts: dict[str, float] = {}
