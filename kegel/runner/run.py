@@ -875,9 +875,8 @@ def _with_unloaded_line_wedge(scene: Scene, op, bnd, loaded_length_m, cfd: dict[
     """``bnd`` with the CFD's far field beyond its gap on the unloaded stretch of the raceway
     lines at this point's load distribution (:func:`kegel.coupling.split.unloaded_line_wedge`).
     Unchanged for a result without a contact / CFD boundary (the old geometry) and for an oil
-    bath: there the term would need the CFD's oil at the lines (the full-line value, 11 mN m at
-    2000 rpm with oil to the shaft centre, is 40 % of that CFD's whole loss, so its lines are far
-    from full); not estimated (docs/cfd.md)."""
+    bath, whose wedges hold 26-69 % oil: the term there, 0.4-0.6 % of the totals, is estimated
+    in docs/cfd.md (benchmarks/cfd_wedge_oil_fraction.py) and left in."""
     from ..coupling.split import unloaded_line_wedge
 
     flooded = (cfd.get("point") or {}).get("oil_level_m") is None

@@ -328,7 +328,7 @@ def test_kegel_run_with_cfd_runs_on_the_shipped_results_in_both_solutions(tmp_pa
     assert bnd["contact_film_limit_m"] == pytest.approx(0.08 * Dw if real else 0.0, rel=1e-12)
     # less the CFD's far field on the unloaded stretch of the lines (kegel.coupling.split): at
     # 1 kN about half of each line carries no load; the term is a small part of the CFD's loss
-    # (flooded; not estimated in an oil bath)
+    # (flooded; in an oil bath it is left in: 0.4-0.6 % of the totals, docs/cfd.md)
     wedge = bnd["unloaded_line_wedge_Nm"]
     assert (0.0 < wedge < 0.2 * loss) if level == "flooded" else wedge == 0.0
     assert bnd["hydraulic_Nm"] == pytest.approx(loss + thin - wedge, rel=1e-12)
