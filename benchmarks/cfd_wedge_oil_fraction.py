@@ -35,26 +35,18 @@ def wedge_oil_fractions(case: Path, cg) -> dict[str, float]:
     """Volume-weighted oil fraction in the inner and outer raceway wedges of every roller."""
     from kegel.cfd_cases.foam import read_field, time_dirs
 
+    from kegel.cfd_cases.geometry import raceway_gap_m
+
     C = np.load(case / "cell_centres.npy")
     V = np.load(case / "cell_volumes.npy")
-    x, y, z = C[:, 0], C[:, 1], C[:, 2]
     times = [t for t in time_dirs(case) if (t / "alpha.oil").is_file()][-3:]
     alpha = np.mean([read_field(t / "alpha.oil") for t in times], axis=0)
-    (bz, br), (az, ar) = cg.roller_small_end_m, cg.roller_axis
-    r1, r2 = cg.roller_radii_m
-    tan_g = (r2 - r1) / cg.roller_length_m
-    cos_g = 1.0 / math.sqrt(1.0 + tan_g * tan_g)
     out = {}
-    for name, ((pz, pr), (qz, qr)) in (("inner", cg.inner_raceway_line_m), ("outer", cg.outer_raceway_line_m)):
-        k_ = (qr - pr) / (qz - pz)
-        d_race = np.abs(np.hypot(x, y) - (pr + (z - pz) * k_)) / math.sqrt(1.0 + k_ * k_)
-        sel = np.zeros(len(x), bool)
+    for name, line in (("inner", cg.inner_raceway_line_m), ("outer", cg.outer_raceway_line_m)):
+        sel = np.zeros(len(C), bool)
         for k in cg.modelled_rollers:
-            c, s = math.cos(cg.roller_azimuth_rad(k)), math.sin(cg.roller_azimuth_rad(k))
-            sx = (x - br * c) * ar * c + (y - br * s) * ar * s + (z - bz) * az
-            q2 = (x - br * c) ** 2 + (y - br * s) ** 2 + (z - bz) ** 2 - sx ** 2
-            d_roll = np.abs(np.sqrt(np.abs(q2)) - (r1 + sx * tan_g)) * cos_g
-            sel |= (d_roll + d_race < WEDGE_GAPS * cg.gap_m) & (sx > 0.0) & (sx < cg.roller_length_m)
+            gap, along = raceway_gap_m(cg, k, line, C)
+            sel |= (gap < WEDGE_GAPS * cg.gap_m) & (along > 0.0) & (along < cg.roller_length_m)
         out[name] = float(np.sum(alpha[sel] * V[sel]) / np.sum(V[sel]))
         out[f"{name}_cells"] = int(sel.sum())
     return out

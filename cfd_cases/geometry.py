@@ -349,6 +349,27 @@ def _gap_size_expression(cg: CfdGeometry, k: int, line, cells: int) -> str:
     return f"({d_roller}+{d_race})/{cells}"
 
 
+def raceway_gap_m(cg: CfdGeometry, k: int, line, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The local gap of roller ``k``'s raceway wedge at ``points`` (shape (n, 3), OpenFOAM frame):
+    the sum of the distances to the roller's cone and to the raceway cone ``line`` (exact for the
+    two cones where the point lies between them; what :func:`_gap_size_expression` sizes the mesh
+    by), and the coordinate along the roller's axis from its small end (in [0, length] beside the
+    roller). g along the contact line."""
+    phi = cg.roller_azimuth_rad(k)
+    c, s_ = math.cos(phi), math.sin(phi)
+    (bz, br), (az, ar) = cg.roller_small_end_m, cg.roller_axis
+    r1, r2 = cg.roller_radii_m
+    tan_g = (r2 - r1) / cg.roller_length_m
+    x, y, z = points[:, 0], points[:, 1], points[:, 2]
+    sx = (x - br * c) * ar * c + (y - br * s_) * ar * s_ + (z - bz) * az
+    q2 = (x - br * c) ** 2 + (y - br * s_) ** 2 + (z - bz) ** 2 - sx ** 2
+    d_roller = np.abs(np.sqrt(np.abs(q2)) - (r1 + sx * tan_g)) / math.sqrt(1.0 + tan_g * tan_g)
+    (pz, pr), (qz, qr) = line
+    k_ = (qr - pr) / (qz - pz)
+    d_race = np.abs(np.hypot(x, y) - (pr + (z - pz) * k_)) / math.sqrt(1.0 + k_ * k_)
+    return d_roller + d_race, sx
+
+
 def build_mesh(cg: CfdGeometry, level: str, msh_path: str | Path, *, threads: int = 1,
                cage: bool = True, cells_across_gap: int | None = CELLS_ACROSS_GAP) -> dict[str, Any]:
     """Build the fluid volume, mesh it with tetrahedra at ``level`` and write ASCII msh 2.2.

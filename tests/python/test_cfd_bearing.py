@@ -76,6 +76,35 @@ def test_raceways_stand_the_contact_gap_off_the_real_rollers(g32208, gap_ratio):
     assert cg.clearance_m >= g32208.cage_pocket_clearance_circumferential_m
 
 
+def test_the_local_raceway_gap_is_g_on_the_contact_line_and_the_mesh_sizes_by_it(g32208):
+    """kegel.cfd_cases.geometry.raceway_gap_m (what benchmarks/cfd_wedge_oil_fraction.py selects
+    the wedge cells by): g midway across the gap along the contact line, in 3-D at the roller's
+    azimuth; and the same number as the mesh's gmsh size expression times the cells across."""
+    from kegel.cfd_cases.geometry import _gap_size_expression, raceway_gap_m
+
+    cg = cfd_geometry(g32208, gap_ratio=0.04)
+    a = np.array(cg.roller_axis)
+    n = np.array([-a[1], a[0]])
+    s0 = np.array(cg.roller_small_end_m)
+    k = 3
+    phi = cg.roller_azimuth_rad(k)
+    pts, expect = [], []
+    for xi in (0.1, 0.5, 0.9):
+        xi_m = xi * cg.roller_length_m
+        r = cg.roller_radii_m[0] + xi * (cg.roller_radii_m[1] - cg.roller_radii_m[0])
+        for side, line in ((-1.0, cg.inner_raceway_line_m), (1.0, cg.outer_raceway_line_m)):
+            zr = s0 + xi_m * a + side * (r + 0.5 * cg.gap_m) * n   # midway across the gap
+            pts.append(((zr[1] * math.cos(phi), zr[1] * math.sin(phi), zr[0]), line))
+            expect.append(xi_m)
+    for ((x, y, z), line), xi_m in zip(pts, expect):
+        gap, along = raceway_gap_m(cg, k, line, np.array([[x, y, z]]))
+        assert gap[0] == pytest.approx(cg.gap_m, rel=1e-3)
+        assert along[0] == pytest.approx(xi_m, rel=1e-3)
+        expr = _gap_size_expression(cg, k, line, 3).replace("^", "**")
+        size = eval(expr, {"abs": abs, "sqrt": math.sqrt, "x": x, "y": y, "z": z})  # noqa: S307 (our own expression)
+        assert 3 * size == pytest.approx(gap[0], rel=1e-9)
+
+
 def test_gap_and_clearance_ratios_are_checked(g32208):
     for kw in ({"gap_ratio": 0.0}, {"gap_ratio": 0.5}, {"gap_ratio": float("nan")}, {"clearance_ratio": 0.0}):
         with pytest.raises(ValueError, match=next(iter(kw))):
