@@ -89,8 +89,10 @@ def write(rows: list[dict], command: str) -> None:
         # far field on the unloaded stretch of the lines, which the contact convention does not count
         r.update(correlations_and_contact(r["speed_rpm"], r["gap_m"]))
         r["unloaded_line_wedge_Nm"] = unloaded_wedge_Nm(r["gap_m"], r["speed_rpm"])["torque_Nm"]
-        r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"] - r["unloaded_line_wedge_Nm"]
-        r["contact_plus_cfd_plus_thin_films_Nm"] = r["contact_plus_cfd_Nm"] + r["thin_films_Nm"]
+        r.pop("contact_plus_cfd_plus_thin_films_Nm", None)  # the name before the wedge term
+        r["contact_plus_cfd_Nm"] = r["contact_cut_at_g_Nm"] + r["cfd_loss_Nm"]
+        r["contact_plus_cfd_less_wedge_Nm"] = r["contact_plus_cfd_Nm"] - r["unloaded_line_wedge_Nm"]
+        r["contact_plus_cfd_less_wedge_plus_thin_films_Nm"] = r["contact_plus_cfd_less_wedge_Nm"] + r["thin_films_Nm"]
         r["contact_plus_liebrecht_Nm"] = r["contact_uncut_Nm"] + r["liebrecht_Nm"]
         r["contact_plus_skf_Nm"] = r["contact_uncut_Nm"] + r["skf_drag_Nm"]
     atomic_write_json(OUT, {"command": command, "point": "32208, FVA 3, 50 degC, flooded, Fa = 1 kN",
@@ -109,9 +111,9 @@ def plot(rows: list[dict], path: Path) -> None:
     rows = sorted(rows, key=lambda r: r["speed_rpm"])
     n = [r["speed_rpm"] for r in rows]
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.plot(n, [1e3 * r["contact_plus_cfd_plus_thin_films_Nm"] for r in rows], "o-",
-            label="contact (cut at g) + CFD + thin films")
-    ax.plot(n, [1e3 * r["contact_plus_cfd_Nm"] for r in rows], "o--", label="contact (cut at g) + CFD - wedge")
+    ax.plot(n, [1e3 * r["contact_plus_cfd_less_wedge_plus_thin_films_Nm"] for r in rows], "o-",
+            label="contact (cut at g) + CFD - wedge + thin films")
+    ax.plot(n, [1e3 * r["contact_plus_cfd_less_wedge_Nm"] for r in rows], "o--", label="contact (cut at g) + CFD - wedge")
     ax.plot(n, [1e3 * r["contact_plus_liebrecht_Nm"] for r in rows], "s--", label="contact + Liebrecht")
     ax.plot(n, [1e3 * r["contact_plus_skf_Nm"] for r in rows], "^--", label="contact + SKF drag")
     ax.plot(n, [1e3 * r["cfd_loss_Nm"] for r in rows], "o:", label="CFD alone (beyond g)")
@@ -152,7 +154,7 @@ def main(argv: list[str] | None = None) -> int:
         rows.append(r)
         keep = [p for p in previous if p["case"] not in {x["case"] for x in rows}]
         write(sorted(keep + rows, key=lambda x: (x["gap_ratio"], x["cells_across_gap"], x["speed_rpm"])), command)
-        print(f"{rpm:6g} rpm  CFD {1e3 * r['cfd_loss_Nm']:.1f} mN m  contact+CFD {1e3 * r['contact_plus_cfd_Nm']:.1f}  "
+        print(f"{rpm:6g} rpm  CFD {1e3 * r['cfd_loss_Nm']:.1f} mN m  contact+CFD-wedge {1e3 * r['contact_plus_cfd_less_wedge_Nm']:.1f}  "
               f"contact+Liebrecht {1e3 * r['contact_plus_liebrecht_Nm']:.1f}  contact+SKF {1e3 * r['contact_plus_skf_Nm']:.1f}",
               flush=True)
     return 0

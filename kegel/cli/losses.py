@@ -177,8 +177,10 @@ def command(args: argparse.Namespace) -> int:
         if any(c["gap_ratio"] is not None for c in cfd_rows):
             print("  real rollers (g / D_w given): the CFD owns the oil beyond the gap g, the contact model the oil "
                   "within it (cut at g, kegel run does it), and the films thinner than the CFD's clearance are "
-                  "the thin-film terms; compare CFD + thin films + the contact's cut with a correlation "
-                  "(docs/cfd.md, three answers). Shrunk rollers: the old geometry, its level set by that gap.")
+                  "the thin-film terms; compare CFD + thin films + the contact's cut, less the CFD's far field on "
+                  "the unloaded stretch of the lines (it needs the load: kegel run takes it off a flooded result), "
+                  "with a correlation (docs/cfd.md, three answers). Shrunk rollers: the old geometry, its level "
+                  "set by that gap.")
         from ..coupling.cfd_results import BALANCE_LIMIT
 
         off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None

@@ -192,8 +192,9 @@ def _print_study(points: list[dict[str, Any]]) -> None:
     if cut:
         g = cut[0]["contact_film_limit_m"]
         print(f"  CFD with the real rollers: contact cut at the CFD's gap g = {1e3 * g:.3g} mm (its friction below "
-              "M_fric by the oil within g, in study.csv) + the CFD beyond g (flooded: less its far field on the "
-              "unloaded stretch of the lines) + the analytic thin films (in brackets; docs/cfd.md)")
+              "M_fric by the oil beyond g, in study.csv) + the CFD beyond g (flooded: less its far field on the "
+              "unloaded stretch of the lines, unloaded_line_wedge_Nm in study.csv; an oil bath keeps it, 0.4-0.6 % "
+              "of its total) + the analytic thin films (in brackets; docs/cfd.md)")
     if missing:
         print(f"  {len(missing)} CFD point(s) missing; they are computed by (see study.csv for all):")
         for c in missing[:5]:

@@ -175,7 +175,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
 _CSV_COLUMNS = ("index", "speed_rpm", "temperature_degC", "axial_load_N", "axial_offset_m", "radial_load_N",
                 "lubrication", "oil_level_m", "method", "status", "friction_torque_Nm",
                 *(f"supply_{k}" for k in _SUPPLY_KEYS), "contact_film_limit_m", "hydraulic_torque_Nm", "cfd_Nm",
-                "thin_films_Nm", "total_torque_Nm", "error_rel", "converged", "note", "command", "warnings")
+                "thin_films_Nm", "unloaded_line_wedge_Nm", "total_torque_Nm", "error_rel", "converged", "note",
+                "command", "warnings")
 
 
 def study_csv(points: list[dict[str, Any]]) -> str:

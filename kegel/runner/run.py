@@ -636,16 +636,10 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
                 g_cut = float(c["gap_ratio"]) * scene.geometry.roller_mean_diameter_m
                 dist, fr = _quasi_static_point(scene, fid, op, dataclasses.replace(f_case, contact_film_limit_m=g_cut),
                                                model=model)
-                # the CFD's far field on the unloaded stretch of the lines (flooded results only:
-                # :func:`_with_unloaded_line_wedge`)
-                from ..coupling.split import unloaded_line_wedge
-                wedge = 0.0
-                if lub.oil_level_m >= scene.bearing.outer_diameter_m and op.speed_rad_s != 0.0:
-                    state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source,
-                                            key="operating.temperature")
-                    wedge = unloaded_line_wedge(scene.geometry, viscosity_Pas=state.dynamic_viscosity_Pas,
-                                                inner_speed_rad_s=abs(op.speed_rad_s),
-                                                loaded_length_m=dist.loaded_length_m, film_limit_m=g_cut).torque_Nm
+                # the CFD's far field on the unloaded stretch of the lines (flooded results only; the
+                # lookup above took a flooded result exactly when the lubrication is flooded)
+                wedge = _unloaded_line_wedge_Nm(scene, op, g_cut, dist.loaded_length_m,
+                                                flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m)
                 rec.update(contact_film_limit_m=g_cut, friction_cut_at_g_Nm=fr.drive_torque_Nm,
                            friction_cut_at_g_converged=fr.converged, unloaded_line_wedge_Nm=wedge)
         out[case_name(lub)] = rec
@@ -735,9 +729,11 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # (levels from this point's result, speed exponents fitted over the same CFD model's sweep)
         cfd, cfd_file, bnd = cfd_point
         # the CFD's far field on the unloaded stretch of the lines (the point's load distribution)
+        # (the quasi-static load distribution of the point, as the dynamic run starts from it)
         dist0 = load_distribution(g, b, m, axial_N=op.axial_load_N, axial_offset_m=op.axial_offset_m,
                                   radial_N=op.radial_load_N, misalignment_rad=op.misalignment_rad,
-                                  tilt_moment_Nm=op.tilt_moment_Nm, tilt_free=op.tilt_moment_Nm != 0.0,
+                                  tilt_moment_Nm=op.tilt_moment_Nm, tilt_free=dyn.tilt_free or op.tilt_moment_Nm != 0.0,
+                                  cage_speed_rad_s=cage_speed_rad_s(g, op.speed_rad_s),
                                   slices=fid.slices, method=fid.slice_model)
         bnd = _with_unloaded_line_wedge(scene, op, bnd, dist0.loaded_length_m, cfd)
         law = flow_forces_from_cfd(cfd, g, sweep=cfd_runs, source=str(cfd_file))
@@ -779,7 +775,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         # kinematics, added at the shaft like the rings' churning: they do not act on the bodies
         # and less the CFD's far field on the unloaded stretch of the lines, which the contact
         # convention does not count (taken off at the shaft: the CFD splits it between the
-        # rollers and the rings)
+        # rollers and the rings, and the flow-force law still puts the rollers' part on them, so
+        # the cage slip keeps that small drag)
         churning = ring + math.copysign(bnd.thin_films_Nm - bnd.unloaded_line_wedge_Nm, op.speed_rad_s)
         hyd_out = {"source": "cfd", "file": str(cfd_file), "loss_torque_at_shaft_Nm": cfd["loss_torque_at_shaft_Nm"],
                    "boundary": bnd.as_dict(), "thin_films_Nm": bnd.thin_films_Nm,
@@ -871,22 +868,28 @@ def _balance_of(cfd: dict[str, Any]) -> float | None:
     return balance_of(cfd)
 
 
-def _with_unloaded_line_wedge(scene: Scene, op, bnd, loaded_length_m, cfd: dict[str, Any]):
-    """``bnd`` with the CFD's far field beyond its gap on the unloaded stretch of the raceway
-    lines at this point's load distribution (:func:`kegel.coupling.split.unloaded_line_wedge`).
-    Unchanged for a result without a contact / CFD boundary (the old geometry) and for an oil
-    bath, whose wedges hold 26-69 % oil: the term there, 0.4-0.6 % of the totals, is estimated
-    in docs/cfd.md (benchmarks/cfd_wedge_oil_fraction.py) and left in."""
+def _unloaded_line_wedge_Nm(scene: Scene, op, film_limit_m: float, loaded_length_m, *, flooded: bool) -> float:
+    """The CFD's far field beyond the gap ``film_limit_m`` on the unloaded stretch of the raceway
+    lines at this point's load distribution (:func:`kegel.coupling.split.unloaded_line_wedge`),
+    for a flooded CFD result; 0 without a boundary (the old geometry) and for an oil bath, whose
+    wedges hold 26-69 % oil: the term there, 0.4-0.6 % of the totals, is estimated in
+    docs/cfd.md (benchmarks/cfd_wedge_oil_fraction.py) and left in."""
     from ..coupling.split import unloaded_line_wedge
 
-    flooded = (cfd.get("point") or {}).get("oil_level_m") is None
-    if not bnd.contact_film_limit_m or not flooded or loaded_length_m is None or op.speed_rad_s == 0.0:
-        return bnd
+    if not film_limit_m or not flooded or loaded_length_m is None or op.speed_rad_s == 0.0:
+        return 0.0
     state = lubricant_state(scene.lubricant, op.temperature_K, source=scene.source, key="operating.temperature")
-    w = unloaded_line_wedge(scene.geometry, viscosity_Pas=state.dynamic_viscosity_Pas,
-                            inner_speed_rad_s=abs(op.speed_rad_s), loaded_length_m=loaded_length_m,
-                            film_limit_m=bnd.contact_film_limit_m)
-    return bnd.with_unloaded_line_wedge(w.torque_Nm)
+    return unloaded_line_wedge(scene.geometry, viscosity_Pas=state.dynamic_viscosity_Pas,
+                               inner_speed_rad_s=abs(op.speed_rad_s), loaded_length_m=loaded_length_m,
+                               film_limit_m=film_limit_m).torque_Nm
+
+
+def _with_unloaded_line_wedge(scene: Scene, op, bnd, loaded_length_m, cfd: dict[str, Any]):
+    """``bnd`` with its unloaded-stretch term (:func:`_unloaded_line_wedge_Nm`); a CFD result is
+    flooded when its point has no oil level."""
+    flooded = (cfd.get("point") or {}).get("oil_level_m") is None
+    return bnd.with_unloaded_line_wedge(
+        _unloaded_line_wedge_Nm(scene, op, bnd.contact_film_limit_m, loaded_length_m, flooded=flooded))
 
 
 def _cfd_point(scene: Scene, op, runs: list[tuple[Path, dict[str, Any]]]):
