@@ -24,7 +24,7 @@ OUT = Path(__file__).with_suffix(".png")
 def main() -> None:
     R, g = 1.0, 0.15
     x_g = float(np.sqrt(2 * R * g - g * g))  # real film h(x) = R - sqrt(R^2 - x^2) reaches g
-    fig, ax = plt.subplots(figsize=(7.0, 4.0))
+    fig, ax = plt.subplots(figsize=(8.0, 4.0))
     th = np.linspace(0, 2 * np.pi, 400)
     ax.fill(R * np.cos(th), R + R * np.sin(th), color="0.85", ec="k", lw=1.2, zorder=3)
     ax.text(0, R, "roller\n(real diameter)", ha="center", va="center", fontsize=9, zorder=4)
@@ -36,8 +36,8 @@ def main() -> None:
     # the contact model's zone: real film below g
     xs = np.linspace(-x_g, x_g, 100)
     ax.fill_between(xs, 0, R - np.sqrt(R * R - xs * xs), color="C3", alpha=0.6, zorder=2)
-    ax.annotate("contact model: film < g\n(Biboulet-Houpert, inlet\nmeniscus where h = g)", xy=(0.0, 0.04),
-                xytext=(-1.55, 0.75), fontsize=8, color="C3", arrowprops=dict(arrowstyle="->", color="C3"))
+    ax.annotate("contact model: film < g\n(Biboulet-Houpert,\nless Reynolds'\nfar field beyond g)", xy=(0.0, 0.04),
+                xytext=(-2.35, 0.6), fontsize=8, color="C3", arrowprops=dict(arrowstyle="->", color="C3"))
     # the CFD's oil: between roller and set-back raceway
     xo = np.linspace(-1.6, 1.6, 300)
     top = np.where(np.abs(xo) < R, R - np.sqrt(np.clip(R * R - xo * xo, 0, None)), 0.9)
@@ -49,7 +49,7 @@ def main() -> None:
     ax.annotate("", xy=(-x_g, -0.32), xytext=(x_g, -0.32), arrowprops=dict(arrowstyle="<->", color="C3"))
     ax.text(0, -0.4, r"$2\sqrt{2Rg}$", ha="center", va="top", fontsize=9, color="C3")
     ax.set_title("The contact / CFD boundary at a raceway line contact (not to scale)", fontsize=10)
-    ax.set_xlim(-1.7, 2.2)
+    ax.set_xlim(-2.4, 2.2)
     ax.set_ylim(-0.6, 2.1)
     ax.set_aspect("equal")
     ax.axis("off")
