@@ -21,6 +21,7 @@ case, so a partial study is kept).
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import math
 import shutil
@@ -54,11 +55,9 @@ def contact_loss_Nm(gap_m: float) -> dict:
     return {k: r[k] for k in ("friction_torque_Nm", "ehl_rolling_torque_Nm", "converged") if k in r}
 
 
-def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM) -> dict:
-    """The CFD's far field beyond ``gap_m`` on the unloaded stretch of the raceway lines at the
-    study point's load distribution (kegel.coupling.split.unloaded_line_wedge): what contact +
-    CFD counts that the contact model's convention does not."""
-    from kegel.coupling.split import unloaded_line_wedge
+@functools.lru_cache(maxsize=1)
+def _study_point():
+    """The study point's geometry, loaded lengths and oil viscosity (solved once per process)."""
     from kegel.model.data import load_bearing, load_material
     from kegel.model.geometry import derive_geometry
     from kegel.model.lubricant import lubricant_state
@@ -66,12 +65,22 @@ def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM) -> dict:
 
     b, m = load_bearing("32208"), load_material("bearing_steel")
     g = derive_geometry(b, m)
-    dist = load_distribution(g, b, m, axial_N=AXIAL_LOAD_N)
-    eta = lubricant_state("FVA3", TEMPERATURE_K).dynamic_viscosity_Pas
+    loaded = load_distribution(g, b, m, axial_N=AXIAL_LOAD_N).loaded_length_m
+    return g, loaded, lubricant_state("FVA3", TEMPERATURE_K).dynamic_viscosity_Pas
+
+
+def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM) -> dict:
+    """The CFD's far field beyond ``gap_m`` on the unloaded stretch of the raceway lines at the
+    study point's load distribution (kegel.coupling.split.unloaded_line_wedge): what contact +
+    CFD counts that the contact model's convention does not; ``whole_line_Nm`` the same over the
+    whole lines."""
+    from kegel.coupling.split import unloaded_line_wedge
+
+    g, loaded, eta = _study_point()
     w = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
-                            loaded_length_m=dist.loaded_length_m, film_limit_m=gap_m)
+                            loaded_length_m=loaded, film_limit_m=gap_m)
     whole = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
-                                loaded_length_m=0.0 * dist.loaded_length_m, film_limit_m=gap_m)
+                                loaded_length_m=0.0 * loaded, film_limit_m=gap_m)
     return {**w.as_dict(), "whole_line_Nm": whole.torque_Nm}
 
 

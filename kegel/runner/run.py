@@ -629,17 +629,17 @@ def _study_case_friction(scene: Scene, fid: "Fidelity", op, friction, point: dic
                        torque_by_mechanism_Nm=fr.torque_by_mechanism_Nm(op.speed_rad_s), note="")
         if study_cfd and lub.mode == "oil_bath":
             # the CFD row's contact: cut where the CFD results' oil begins (their gap g)
+            flooded = lub.oil_level_m >= scene.bearing.outer_diameter_m
             c = cfd_loss_at(study_cfd, bearing=scene.bearing.designation, lubricant=scene.lubricant.name,
                             speed_rad_s=op.speed_rad_s, temperature_K=op.temperature_K,
-                            oil_level_m=lub.oil_level_m, flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m)
+                            oil_level_m=lub.oil_level_m, flooded=flooded)
             if c["gap_ratio"] is not None and c["status"] != "missing" and fid.solution != "dynamic":
                 g_cut = float(c["gap_ratio"]) * scene.geometry.roller_mean_diameter_m
                 dist, fr = _quasi_static_point(scene, fid, op, dataclasses.replace(f_case, contact_film_limit_m=g_cut),
                                                model=model)
-                # the CFD's far field on the unloaded stretch of the lines (flooded results only; the
+                # the CFD's far field on the unloaded stretch of the lines (flooded results only: the
                 # lookup above took a flooded result exactly when the lubrication is flooded)
-                wedge = _unloaded_line_wedge_Nm(scene, op, g_cut, dist.loaded_length_m,
-                                                flooded=lub.oil_level_m >= scene.bearing.outer_diameter_m)
+                wedge = _unloaded_line_wedge_Nm(scene, op, g_cut, dist.loaded_length_m, flooded=flooded)
                 rec.update(contact_film_limit_m=g_cut, friction_cut_at_g_Nm=fr.drive_torque_Nm,
                            friction_cut_at_g_converged=fr.converged, unloaded_line_wedge_Nm=wedge)
         out[case_name(lub)] = rec
