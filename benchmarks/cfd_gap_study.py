@@ -44,20 +44,21 @@ def case_name(gap: float, cells: int, mesh: str, sector: bool, speed_rpm: float 
     return f"32208_{speed_rpm:g}rpm_flooded_50C_{mesh}_g{gap:g}_n{cells}" + ("_sector" if sector else "_full")
 
 
-def contact_loss_Nm(gap_m: float) -> dict:
+def contact_loss_Nm(gap_m: float, axial_load_N: float = AXIAL_LOAD_N) -> dict:
     """kegel's contact friction torque of the study point with the rolling force cut off at a
     film height of ``gap_m`` (kegel.runner.film_limit.contact_loss_at_film_limit)."""
     from kegel.runner.film_limit import contact_loss_at_film_limit  # the contact side of the split
 
     r = contact_loss_at_film_limit(gap_m, bearing="32208", speed=f"{SPEED_RPM:g} rpm",
-                                   axial_load=f"{AXIAL_LOAD_N:g} N", temperature=f"{TEMPERATURE_K - 273.15:g} degC",
+                                   axial_load=f"{axial_load_N:g} N", temperature=f"{TEMPERATURE_K - 273.15:g} degC",
                                    oil_level="flooded")
     return {k: r[k] for k in ("friction_torque_Nm", "ehl_rolling_torque_Nm", "converged") if k in r}
 
 
-@functools.lru_cache(maxsize=1)
-def _study_point():
-    """The study point's geometry, loaded lengths and oil viscosity (solved once per process)."""
+@functools.lru_cache(maxsize=None)
+def _study_point(axial_load_N: float = AXIAL_LOAD_N):
+    """The study point's geometry, loaded lengths and oil viscosity (solved once per process and
+    load)."""
     from kegel.model.data import load_bearing, load_material
     from kegel.model.geometry import derive_geometry
     from kegel.model.lubricant import lubricant_state
@@ -65,23 +66,42 @@ def _study_point():
 
     b, m = load_bearing("32208"), load_material("bearing_steel")
     g = derive_geometry(b, m)
-    loaded = load_distribution(g, b, m, axial_N=AXIAL_LOAD_N).loaded_length_m
+    loaded = load_distribution(g, b, m, axial_N=axial_load_N).loaded_length_m
     return g, loaded, lubricant_state("FVA3", TEMPERATURE_K).dynamic_viscosity_Pas
 
 
-def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM) -> dict:
+def unloaded_wedge_Nm(gap_m: float, speed_rpm: float = SPEED_RPM, axial_load_N: float = AXIAL_LOAD_N) -> dict:
     """The CFD's far field beyond ``gap_m`` on the unloaded stretch of the raceway lines at the
     study point's load distribution (kegel.coupling.split.unloaded_line_wedge): what contact +
     CFD counts that the contact model's convention does not; ``whole_line_Nm`` the same over the
     whole lines."""
     from kegel.coupling.split import unloaded_line_wedge
 
-    g, loaded, eta = _study_point()
+    g, loaded, eta = _study_point(axial_load_N)
     w = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
                             loaded_length_m=loaded, film_limit_m=gap_m)
     whole = unloaded_line_wedge(g, viscosity_Pas=eta, inner_speed_rad_s=speed_rpm * math.pi / 30,
                                 loaded_length_m=0.0 * loaded, film_limit_m=gap_m)
     return {**w.as_dict(), "whole_line_Nm": whole.torque_Nm}
+
+
+def loads_table(loads_N: list[float]) -> list[dict]:
+    """The split at other axial loads with the stored CFD losses (the CFD's geometry does not
+    depend on the load): contact + CFD - wedge over the 3-cell tiny gaps, and its spread with
+    and without the wedge. Printed as docs/cfd.md's table "At other loads"."""
+    rows = sorted((r for r in json.loads(OUT.read_text())["rows"]
+                   if r["sector"] and r["cells_across_gap"] == 3 and r["mesh"] == "tiny"), key=lambda r: -r["gap_ratio"])
+    out = []
+    for F in loads_N:
+        raw = [contact_loss_Nm(r["gap_m"], F)["friction_torque_Nm"] + r["cfd_loss_Nm"] for r in rows]
+        sums = [x - unloaded_wedge_Nm(r["gap_m"], axial_load_N=F)["torque_Nm"] for x, r in zip(raw, rows)]
+        g, loaded, _ = _study_point(F)
+        spread = lambda v: (max(v) - min(v)) / (sum(v) / len(v))  # noqa: E731
+        out.append({"axial_load_N": F, "loaded_share": float(loaded[0, 0] / g.roller_length_m), "sums_Nm": sums,
+                    "spread": spread(sums), "spread_without_wedge": spread(raw)})
+        print(f"| {F:g} N | {100 * out[-1]['loaded_share']:.0f} % | {' / '.join(f'{1e3 * x:.1f}' for x in sums)} | "
+              f"{100 * out[-1]['spread']:.2f} % | {100 * out[-1]['spread_without_wedge']:.1f} % |", flush=True)
+    return out
 
 
 def run_one(gap: float, cells: int, mesh: str, sector: bool, n_procs: int, max_iterations: int = 1500,
@@ -187,12 +207,17 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--max-iterations", type=int, default=1500,
                     help="SIMPLE iterations at most (default 1500); a case resumes from its latest state")
     ap.add_argument("--report", action="store_true", help="only re-read the stored rows: contact losses and plot")
+    ap.add_argument("--loads", type=float, nargs="+", default=None, metavar="N",
+                    help="only print the split at these axial loads [N] with the stored CFD losses")
     ap.add_argument("--check-sector", action="store_true",
                     help="run g = 0.08 with one cell across as a sector and as the whole bearing")
     args = ap.parse_args(argv)
     command = "benchmarks/cfd_gap_study.py " + " ".join(sys.argv[1:] if argv is None else argv)
     rows: list[dict] = []
     previous = json.loads(OUT.read_text()).get("rows", []) if OUT.is_file() else []
+    if args.loads:
+        loads_table(args.loads)
+        return 0
     if args.report:
         write(previous, json.loads(OUT.read_text())["command"] if OUT.is_file() else command,
               "rows of earlier invocations are kept; each row names its case")

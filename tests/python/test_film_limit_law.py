@@ -54,8 +54,9 @@ def flooded() -> float:
 
 
 #: S = g / h0 and how close (in parts of the flooded force) the closed form must be: the
-#: measured differences are 0.98 %, 0.12 % and 0.003 %.
-CASES = [(25.0, 0.012), (100.0, 0.002), (1000.0, 1e-4)]
+#: measured differences are 3.8 %, 0.98 %, 0.12 % and 0.003 % (at 10 h0 the closed form takes
+#: too much: the neglected terms are of order h0 / g).
+CASES = [(10.0, 0.04), (25.0, 0.012), (100.0, 0.002), (1000.0, 1e-4)]
 
 
 @pytest.mark.parametrize("S, tol", CASES)

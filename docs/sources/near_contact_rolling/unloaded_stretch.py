@@ -15,6 +15,9 @@ length is Martin's 4.601 eta0 u sqrt(R / h0) (Reynolds outlet, inlet at infinity
 near_contact_rolling/README.md, 1e), its dissipation 2 f u.
 
     .venv/bin/python docs/sources/near_contact_rolling/unloaded_stretch.py
+
+It ends with the same fully flooded estimate for the 32216 of the seed's Figure 5, beside kegel's
+total there and the supply model's inlet ratio S.
 """
 import math
 
@@ -117,3 +120,34 @@ for floor in (0.5e-6, 1e-6, 2e-6):
         h = np.maximum(gap[q <= 0], floor)
         total += g.roller_count * float(np.sum(2 * 4.601 * eta * u * np.sqrt(R / h) * u * we)) / w
     print(f"h_floor {floor * 1e6:.1f} um: elastic gaps: {1e3 * total:.0f} mN m")
+
+
+# --- the 32216 of the seed's Figure 5 (6 kN, 50 degC, oil bath at half roller height): the same
+# fully flooded estimate (rigid gaps, floor 1 um) beside kegel's total and the supply's inlet ratio
+
+import kegel  # noqa: E402
+
+b6 = load_bearing("32216")
+g6 = derive_geometry(b6, m)
+dist6 = load_distribution(g6, b6, m, axial_N=6000.0)
+prof6 = pc.roller_profile(b6)
+for rpm in (500, 2000, 4000):
+    w6 = rpm * math.pi / 30
+    wc6 = cage_speed_rad_s(g6, w6)
+    total = 0.0
+    for name, Q in (("inner", dist6.inner_N[0]), ("outer", dist6.outer_N[0])):
+        R, r_ring = raceway_line_point(g6, 0.0, name)
+        u = (w6 - wc6) * r_ring if name == "inner" else wc6 * r_ring
+        model = C.LineContactModel(n, b6.roller_length_m, [R] * n, E, C.SliceMethod.alternative_slicing)
+        data = C.LineContactData(model)
+        y6 = np.array(model.positions_m)
+        drop6 = np.array([prof6.drop_m(v) for v in y6])
+        a = C.solve_line_contact_load(model, data, list(drop6), Q)
+        q = np.array(data.line_load_N_m)
+        gap = np.maximum(drop6[q <= 0] - a, 1e-6)
+        total += g6.roller_count * float(np.sum(2 * 4.601 * eta * u * np.sqrt(R / gap) * u * model.width_m)) / w6
+    r = kegel.Bearing("32216").friction(speed=f"{rpm} rpm", axial_load="6 kN", temperature="50 degC")
+    sup = r.points[0]["lubricant_supply"]
+    print(f"32216, 6 kN, {rpm} rpm: unloaded stretch (fully flooded, floor 1 um) {total:.2f} N m; kegel total "
+          f"{r.total_torque_Nm:.2f} N m (oil bath, half roller height); supply S = "
+          f"{sup['inlet_gap_ratio_inner']:.0f} / {sup['inlet_gap_ratio_outer']:.0f} (inner / outer)")
