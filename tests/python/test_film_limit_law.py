@@ -199,3 +199,27 @@ def test_the_unloaded_wedge_grows_with_the_unloaded_length(point, frac, gap_mm):
     w_short = _wedge(point, np.full((g.roller_count, 2), hi * L), gap_mm * 1e-3).torque_Nm   # less unloaded
     w_long = _wedge(point, np.full((g.roller_count, 2), lo * L), gap_mm * 1e-3).torque_Nm
     assert 0.0 <= w_short <= w_long * (1 + 1e-12) + 1e-15
+
+
+def test_the_two_point_wedge_equals_the_integral_along_the_line(point):
+    """unloaded_line_wedge takes R' and u_m at the middle of each end's unloaded half; integrated
+    along the unloaded stretch (200 points per end) it is the same within 0.1 % (measured 0.02 %
+    at g = 0.8 and 0.1 mm, the 32208 at 1 kN)."""
+    from kegel._core import tribology as T_
+    from kegel.physics.tribology import cage_speed_rad_s, raceway_line_point
+
+    g, L, w = point["g"], point["g"].roller_length_m, point["w"]
+    wc = cage_speed_rad_s(g, w)
+    for gap in (0.8e-3, 0.1e-3):
+        P = 0.0
+        for col, contact in enumerate(("inner", "outer")):
+            om = w - wc if contact == "inner" else -wc
+            for loaded in point["dist"].loaded_length_m[:, col]:
+                half = 0.5 * (L - loaded)
+                x = (np.arange(200) + 0.5) * half / 200
+                for s in (-1.0, 1.0):
+                    for xi in x:
+                        R, r = raceway_line_point(g, s * (0.5 * L - xi), contact)
+                        u = abs(om) * r
+                        P += 2 * T_.rolling_force_beyond_film_N_m(point["eta"], u, R, gap) * u * half / 200
+        assert _wedge(point, point["dist"].loaded_length_m, gap).torque_Nm == pytest.approx(P / w, rel=1e-3)
