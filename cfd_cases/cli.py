@@ -87,7 +87,7 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
             raise KegelInputError(src, "--start-on", start, "either --start-on or --initial-from, not both")
     if init:
         if level is None:
-            raise KegelInputError(src, "--initial-from", init, "an oil-bath point (a flooded run starts from rest)")
+            raise KegelInputError(src, "--initial-from", init, "an oil-bath point (a flooded run starts with the oil turning with the cage)")
         if not (Path(init) / "kegel-case.json").is_file():
             raise KegelInputError(src, "--initial-from", init, "a kegel CFD case folder (with kegel-case.json)")
         extra["initial_from"] = str(Path(init).resolve())
@@ -175,7 +175,7 @@ def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
     if not start:
         return point, None
     if point.flooded:
-        print("cfd: --start-on applies to oil-bath points; the flooded point starts from rest", file=sys.stderr)
+        print("cfd: --start-on applies to oil-bath points; the flooded point starts with the oil turning with the cage", file=sys.stderr)
         return point, None
     start_case = case.with_name(f"{case.name}_start_{start}")
     fine = dataclasses.replace(point, initial_from=str(start_case.resolve()))
