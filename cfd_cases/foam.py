@@ -9,6 +9,7 @@ log excerpt that shows it.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import re
@@ -16,7 +17,7 @@ import shutil
 import signal
 import subprocess
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -315,7 +316,9 @@ def run_solver(
     stopped = False
     stop_requested = 0.0
     interrupted: str | None = None
-    with open(log_path, "a") as log, subprocess.Popen(
+    # SIGTERM (kill, a batch system's stop) is handled as Ctrl-C: the solver runs in its own
+    # session, so without this it ran on, orphaned, after its Python parent died
+    with _sigterm_as_interrupt(), open(log_path, "a") as log, subprocess.Popen(
         cmd, env=foam_environment(), stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         bufsize=1, start_new_session=True,
     ) as proc:
@@ -390,6 +393,26 @@ def run_solver(
             _excerpt(tail, 40),
         )
     return RunSummary(application, case, log_path, n_procs, wall, state, stopped)
+
+
+@contextlib.contextmanager
+def _sigterm_as_interrupt() -> Iterator[None]:
+    """Within the block, SIGTERM raises KeyboardInterrupt (the main thread only: signals cannot
+    be handled elsewhere); the previous handler is restored after it."""
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def _raise(signum, frame):
+        raise KeyboardInterrupt(f"signal {signum}")
+
+    previous = signal.signal(signal.SIGTERM, _raise)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _stop_on_interrupt(proc: subprocess.Popen, case: Path, log, grace_s: float = 60.0) -> str:

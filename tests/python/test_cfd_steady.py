@@ -307,6 +307,28 @@ def test_ctrl_c_stops_the_solver_and_says_how_to_resume(tmp_path, monkeypatch, o
     assert ("wrote its state" in str(err.value)) is obedient
 
 
+def test_sigterm_stops_the_solver_as_ctrl_c_does(tmp_path, monkeypatch):
+    """``kill`` (SIGTERM) on kegel while a solver runs: the solver, in its own session, ran on
+    orphaned after its parent died (a 4.6 M-cell run kept both cores). It is now stopped as on
+    Ctrl-C (asked to write its state), and kegel's own SIGTERM handler is given back after."""
+    import os
+    import signal
+
+    import kegel.cfd_cases.foam as foam
+
+    case = _stand_in_solver(tmp_path, monkeypatch, _OBEDIENT)
+    before = signal.getsignal(signal.SIGTERM)
+
+    def term(st, eta):
+        if st.steps == 3:
+            os.kill(os.getpid(), signal.SIGTERM)
+
+    with pytest.raises(foam.FoamInterrupted, match="wrote its state"):
+        foam.run_solver(case, "interFoam", n_procs=1, end_time=100.0, progress=term)
+    assert (case / "written").exists()
+    assert signal.getsignal(signal.SIGTERM) is before
+
+
 def test_eta_of_a_resumed_run_counts_from_where_it_resumed(tmp_path, monkeypatch):
     """A run resumed at t = 10 that advances 0.1 per step, 20 steps per second, to an end time
     of 11: 0.2 s to go at t = 10.6. (Counting from t = 0, the ETA was a hundredth of that.)"""
