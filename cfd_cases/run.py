@@ -699,7 +699,9 @@ class _SteadyMonitor:
             worst_loss = max(abs(d.remaining), d2) / max(self.tol * abs(d.estimate), 1e-300)
             imbalance = self._imbalance(lo, k)
             # the last window's mean (the extrapolated estimate swings wildly when the means turn)
-            self.status = (f"loss {1e3 * float(ml[2]):.3g} mN m, change {max(worst_loss, worst_body):.1f} x the "
+            # the whole bearing's loss (a sector's times its copies), as results.json reports it
+            copies = ((self.meta or {}).get("geometry") or {}).get("copies", 1)
+            self.status = (f"loss {1e3 * copies * float(ml[2]):.3g} mN m, change {max(worst_loss, worst_body):.1f} x the "
                            f"steady limit, balance " + ("?" if imbalance is None else f"{100 * imbalance:+.1f} %"))
             if not (worst_loss <= 1.0 and worst_body <= 1.0):
                 self.flooded_since = None

@@ -457,6 +457,9 @@ def test_an_oscillation_that_averages_out_is_steady_a_creep_is_not(tmp_path, mon
     w0, w1 = wobble.window  # a window of 100 iterations, once the test has held for 100 more
     assert w1 - w0 == 100.0 and 400.0 <= w1 <= 500.0
     assert "loss 40 mN m" in wobble.status
+    sector = _flooded_monitor(monkeypatch, tmp_path, lambda n: -0.04 + 0 * n, lambda n: 0.04 + 0 * n)
+    sector.meta["geometry"] = {"copies": 17}  # a one-pitch sector: the progress line gives the bearing's loss
+    assert sector(None) is True and "loss 680 mN m" in sector.status
     creep = _flooded_monitor(monkeypatch, tmp_path, lambda n: -0.04 * (1 + 2e-4 * n), lambda n: 0.04 * (1 + 2e-4 * n))
     assert creep(None) is False
     change = re.search(r"change (\S+) x the steady limit", creep.status).group(1)
