@@ -3,8 +3,9 @@ balance says (issue 29).
 
 For every finished flooded case of the gap study (``results/cfd/gap_study/32208_*``), the two
 runs of the default sector that differ only in where the oil starts (``results/cfd/start_study/``:
-at rest, the runner's start until this study, and turning with the cage; both run 3000 iterations
-with the steady test off), or the case folders named on the command line, the window means (100 iterations, as the flooded steady test) of
+at rest, the runner's start until this study, and turning with the cage; the default sector's two ran
+about 3000 iterations with the steady test off, the others until it passed,
+``benchmarks/cfd_start_study.py``), or the case folders named on the command line, the window means (100 iterations, as the flooded steady test) of
 each wall's torque about the bearing axis (inner ring, shaft, outer ring, housing, cage, the
 rollers' orbit moments), of the loss torque at the shaft and of the balance (sum of the wall
 torques / |drive torque|), whole-bearing values; and the flooded steady test replayed on the
@@ -29,7 +30,7 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 sys.path.insert(0, str(REPO))
 CASES = REPO / "results" / "cfd" / "gap_study"
-STARTS = REPO / "results" / "cfd" / "start_study"
+STARTS = REPO / "results" / "cfd" / "start_study"  # benchmarks/cfd_start_study.py and the two long runs
 OUT = HERE / "results" / "cfd_flooded_convergence.json"
 WINDOW = 100  # iterations
 WALLS = ("inner_ring", "shaft", "outer_ring", "housing", "cage")
@@ -117,12 +118,13 @@ def main(argv: list[str] | None = None) -> int:
     starts = [r for r in result if "_start_" in r["case"]]
     if starts:
         print("\nWhere the oil starts (whole-bearing mN m, window means of 100 iterations):\n")
-        print("| start | to iteration | loss | inner ring | shaft | outer ring | housing | cage | rollers about the axis | balance |")
+        print("| case, start | to iteration | loss | inner ring | shaft | outer ring | housing | cage | rollers about the axis | balance |")
         print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
         for r in starts:
             for w in r["windows"]:
                 if w["to_iteration"] % 500 == 0:
-                    print(f"| {r['case'].rsplit('_start_', 1)[1]} | {w['to_iteration']} | "
+                    print(f"| {r['case'].split('rpm_flooded_50C_', 1)[0]} rpm, {r['case'].rsplit('_start_', 1)[1]} | "
+                          f"{w['to_iteration']} | "
                           + " | ".join(f"{1e3 * w[k + '_Nm']:.2f}" for k in ("loss", *WALLS, "rollers_about_axis"))
                           + f" | {100 * w['balance']:+.1f} % |")
     atomic_write_json(OUT, {"command": " ".join([".venv/bin/python benchmarks/cfd_flooded_convergence.py", *argv]),
