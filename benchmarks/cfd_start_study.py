@@ -56,13 +56,20 @@ def parse_point(text: str) -> tuple[float, float, int]:
     raise SystemExit(f"cfd_start_study: point {text!r}: expected [SPEED_RPM:]GAP_RATIO:CELLS, e.g. 500:0.08:3")
 
 
+def _point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int):
+    """The flooded study point as a :class:`kegel.cfd_cases.run.CfdPoint` (tiny background, sector)."""
+    from kegel.cfd_cases.run import CfdPoint
+
+    return CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
+                    oil_level_m=None, mesh="tiny", n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
+                    cells_across_gap=cells, sector=True)
+
+
 def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int) -> Path:
     """Run (or resume) one case from the runner's start; copy its results.json into ``STORE``."""
-    from kegel.cfd_cases.run import CfdPoint, run_case
+    from kegel.cfd_cases.run import run_case
 
-    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
-                 oil_level_m=None, mesh="tiny", n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
-                 cells_across_gap=cells, sector=True)
+    p = _point(speed_rpm, gap, cells, n_procs, max_iterations)
     name = case_name(gap, cells, "tiny", True, speed_rpm)
     case = CASES / f"{name}_start_cage"
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
@@ -75,7 +82,7 @@ def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterat
 def continue_from_rest(speed_rpm: float, gap: float, cells: int, max_iterations: int) -> Path:
     """The gap study's stored run of the point, copied once and run on until steady."""
     from cfd_gap_study import CASES as GAP_CASES
-    from kegel.cfd_cases.run import CfdPoint, run_case
+    from kegel.cfd_cases.run import run_case
 
     name = case_name(gap, cells, "tiny", True, speed_rpm)
     case = CASES / f"{name}_start_rest"
@@ -83,10 +90,7 @@ def continue_from_rest(speed_rpm: float, gap: float, cells: int, max_iterations:
         CASES.mkdir(parents=True, exist_ok=True)
         shutil.copytree(GAP_CASES / name, case, symlinks=True)
     n_procs = json.loads((case / "kegel-case.json").read_text())["point"]["n_procs"]
-    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
-                 oil_level_m=None, mesh="tiny", n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
-                 cells_across_gap=cells, sector=True)
-    run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
+    run_case(_point(speed_rpm, gap, cells, n_procs, max_iterations), case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
     return case / "results.json"
 
 
