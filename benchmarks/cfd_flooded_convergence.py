@@ -39,8 +39,7 @@ WALLS = ("inner_ring", "shaft", "outer_ring", "housing", "cage")
 def wall_histories(case: Path) -> dict[str, np.ndarray]:
     """Each wall's torque about the bearing axis after every iteration (whole bearing, N m),
     the rollers' orbit moments summed, the loss torque at the shaft; ``iteration`` the index."""
-    from kegel.cfd_cases.forces import read_forces
-    from kegel.cfd_cases.run import _forces, loss_torque_series
+    from kegel.cfd_cases.run import _forces, loss_torque_series, rollers_about_axis
 
     meta = json.loads((case / "kegel-case.json").read_text())
     copies = meta["geometry"].get("copies", 1)
@@ -49,24 +48,21 @@ def wall_histories(case: Path) -> dict[str, np.ndarray]:
     for w in WALLS:
         f = _forces(case, w)
         out[w] = copies * np.interp(it, f.time, f.moment_total[:, 2])
-    rollers = np.zeros_like(out["loss"])
-    for r in meta["rollers"]:
-        f = read_forces(case, f"forces_{r['name']}")
-        mz = np.cross(np.array(r["centre_m"]), f.force_total)[:, 2] + f.moment_total[:, 2]
-        rollers += copies * np.interp(it, f.time, mz)
-    out["rollers_about_axis"] = rollers
+    out["rollers_about_axis"] = copies * rollers_about_axis(case, meta, np.asarray(it))
     return out
 
 
-def window_table(h: dict[str, np.ndarray]) -> list[dict]:
-    """Means over consecutive windows of ``WINDOW`` iterations, with the balance."""
+def window_table(h: dict[str, np.ndarray], width: float = WINDOW, key: str = "to_iteration") -> list[dict]:
+    """Means over consecutive windows of ``width`` (iterations; seconds for a transient run's
+    force times, ``key`` naming the window's end), with the balance."""
     rows = []
     it = h["iteration"]
-    for a in range(0, int(it.max()), WINDOW):
-        m = (it > a) & (it <= a + WINDOW)
+    for a in np.arange(0.0, float(it.max()), width):
+        m = (it > a) & (it <= a + width)
         if not m.any():
             continue
-        row = {"to_iteration": a + WINDOW}
+        end = a + width
+        row = {key: int(round(end)) if key == "to_iteration" else round(float(end), 6)}
         for k in ("loss", *WALLS, "rollers_about_axis"):
             row[f"{k}_Nm"] = float(h[k][m].mean())
         total = sum(row[f"{k}_Nm"] for k in (*WALLS, "rollers_about_axis"))

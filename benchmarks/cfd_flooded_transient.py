@@ -31,13 +31,12 @@ import shutil
 import sys
 from pathlib import Path
 
-import numpy as np
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 sys.path.insert(0, str(HERE))
 
-from cfd_flooded_convergence import WALLS, wall_histories  # noqa: E402
+from cfd_flooded_convergence import WALLS, wall_histories, window_table  # noqa: E402
 from cfd_gap_study import CASES as GAP_CASES, case_name  # noqa: E402
 from cfd_start_study import CASES, parse_point  # noqa: E402
 
@@ -87,17 +86,7 @@ def prepare(src: Path, case: Path, end_s: float, max_courant: float) -> None:
 def report(case: Path) -> dict:
     h = wall_histories(case)
     t = h["iteration"]  # the force files' time: seconds here
-    rows = []
-    for a in np.arange(0.0, float(t.max()), WINDOW_S):
-        m = (t > a) & (t <= a + WINDOW_S)
-        if not m.any():
-            continue
-        row = {"to_time_s": round(float(a + WINDOW_S), 6)}
-        for k in ("loss", *WALLS, "rollers_about_axis"):
-            row[f"{k}_Nm"] = float(np.mean(h[k][m]))
-        total = sum(row[f"{k}_Nm"] for k in (*WALLS, "rollers_about_axis"))
-        row["balance"] = total / abs(row["inner_ring_Nm"] + row["shaft_Nm"])
-        rows.append(row)
+    rows = window_table(h, WINDOW_S, "to_time_s")
     print(f"{case.name}: simulated to t = {float(t.max()):.3f} s, {len(t)} steps")
     print("| to t [s] | loss | inner ring | shaft | outer ring | housing | cage | rollers about the axis | balance |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")

@@ -725,17 +725,11 @@ class _SteadyMonitor:
     FLOODED_BODY_RESOLUTION = 0.1
 
     def _rollers_about_axis(self, t: np.ndarray) -> np.ndarray:
-        """The rollers' moments about the bearing axis (their orbit drag), summed, at times ``t``.
-        Flat ring and cage torques alone passed the g = 0.02 D_w gap-study case at iteration 264
-        while the oil between the rollers was still spinning up (the wall torques' balance moving
-        from -23 % towards -7 %): the rollers' share must hold too."""
-        out = np.zeros_like(t)
-        for r in (self.meta or {}).get("rollers", []):
-            f = read_forces(self.case, f"forces_{r['name']}")
-            c = np.array(r["centre_m"])
-            mz = np.cross(c, f.force_total)[:, 2] + f.moment_total[:, 2]
-            out += np.interp(t, f.time, mz)
-        return out
+        """The rollers' orbit moments at times ``t`` (:func:`rollers_about_axis`). Flat ring and
+        cage torques alone passed the g = 0.02 D_w gap-study case at iteration 264 while the oil
+        between the rollers was still spinning up (the wall torques' balance moving from -23 %
+        towards -7 %): the rollers' share must hold too."""
+        return rollers_about_axis(self.case, self.meta or {}, t)
 
     def _imbalance(self, lo: int, hi: int) -> float | None:
         """The angular-momentum balance over the samples ``lo:hi`` of the force files: (mean sum of
@@ -787,6 +781,17 @@ def _roller_motion(roller: dict[str, Any], kin: dict[str, float]) -> tuple[np.nd
     ez = np.array([0.0, 0.0, 1.0])
     c, a = np.array(roller["centre_m"]), np.array(roller["axis"])
     return kin["cage_rad_s"] * np.cross(ez, c), kin["cage_rad_s"] * ez + kin["roller_spin_rad_s"] * a
+
+
+def rollers_about_axis(case: Path, meta: dict, t: np.ndarray) -> np.ndarray:
+    """The rollers' moments about the bearing axis (their orbit drag), summed over the rollers
+    of the case (a sector's: times its copies for the bearing), at times ``t``."""
+    out = np.zeros_like(t, dtype=float)
+    for r in meta.get("rollers", []):
+        f = read_forces(case, f"forces_{r['name']}")
+        mz = np.cross(np.array(r["centre_m"]), f.force_total)[:, 2] + f.moment_total[:, 2]
+        out += np.interp(t, f.time, mz)
+    return out
 
 
 def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
