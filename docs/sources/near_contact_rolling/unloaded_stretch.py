@@ -41,23 +41,29 @@ wc = cage_speed_rad_s(g, w)
 dist = load_distribution(g, b, m, axial_N=1000.0)
 prof = pc.roller_profile(b)
 L, n = b.roller_length_m, 60
-ri, ro = 0.5 * g.inner_raceway_diameter_mid_m, 0.5 * g.outer_raceway_diameter_mid_m
-rw = 0.5 * g.roller_mean_diameter_m / math.cos(g.roller_half_angle_rad)
-Rr_i, Rr_o = ri / math.cos(g.cone_angle_rad), ro / math.cos(g.cup_angle_rad)
-contacts = {"inner": (dist.inner_N[0], rw * Rr_i / (Rr_i + rw), (w - wc) * ri),
-            "outer": (dist.outer_N[0], rw * Rr_o / (Rr_o - rw), wc * ro)}
-for floor in (0.5e-6, 1e-6, 2e-6):
+
+
+def rigid_unloaded_stretch_Nm(g, b, dist, w, floor):
+    """Martin's dissipation over the unloaded slices of one roller per raceway (rigid gaps: the
+    crown's drop less the approach, at least ``floor``), fully flooded, times the roller count,
+    as a torque at the shaft turning at ``w``."""
+    wc, prof = cage_speed_rad_s(g, w), pc.roller_profile(b)
     total = 0.0
-    for name, (Q, R, u) in contacts.items():
-        model = C.LineContactModel(n, L, [R] * n, E, C.SliceMethod.alternative_slicing)
+    for name, Q in (("inner", dist.inner_N[0]), ("outer", dist.outer_N[0])):
+        R, r_ring = raceway_line_point(g, 0.0, name)
+        u = (w - wc) * r_ring if name == "inner" else wc * r_ring
+        model = C.LineContactModel(n, b.roller_length_m, [R] * n, E, C.SliceMethod.alternative_slicing)
         data = C.LineContactData(model)
-        y = np.array(model.positions_m)
-        drop = np.array([prof.drop_m(v) for v in y])
+        drop = np.array([prof.drop_m(v) for v in model.positions_m])
         a = C.solve_line_contact_load(model, data, list(drop), Q)
-        q = np.array(data.line_load_N_m)
-        gap = np.maximum(drop[q <= 0] - a, floor)
+        gap = np.maximum(drop[np.array(data.line_load_N_m) <= 0] - a, floor)
         f = 4.601 * eta * u * np.sqrt(R / gap)          # N/m per surface
         total += g.roller_count * float(np.sum(2 * f * u * model.width_m)) / w
+    return total
+
+
+for floor in (0.5e-6, 1e-6, 2e-6):
+    total = rigid_unloaded_stretch_Nm(g, b, dist, w, floor)
     print(f"h_floor {floor * 1e6:.1f} um: unloaded stretch, flooded, inlet at infinity: {1e3 * total:.0f} mN m")
 
 
@@ -130,22 +136,8 @@ import kegel  # noqa: E402
 b6 = load_bearing("32216")
 g6 = derive_geometry(b6, m)
 dist6 = load_distribution(g6, b6, m, axial_N=6000.0)
-prof6 = pc.roller_profile(b6)
 for rpm in (500, 2000, 4000):
-    w6 = rpm * math.pi / 30
-    wc6 = cage_speed_rad_s(g6, w6)
-    total = 0.0
-    for name, Q in (("inner", dist6.inner_N[0]), ("outer", dist6.outer_N[0])):
-        R, r_ring = raceway_line_point(g6, 0.0, name)
-        u = (w6 - wc6) * r_ring if name == "inner" else wc6 * r_ring
-        model = C.LineContactModel(n, b6.roller_length_m, [R] * n, E, C.SliceMethod.alternative_slicing)
-        data = C.LineContactData(model)
-        y6 = np.array(model.positions_m)
-        drop6 = np.array([prof6.drop_m(v) for v in y6])
-        a = C.solve_line_contact_load(model, data, list(drop6), Q)
-        q = np.array(data.line_load_N_m)
-        gap = np.maximum(drop6[q <= 0] - a, 1e-6)
-        total += g6.roller_count * float(np.sum(2 * 4.601 * eta * u * np.sqrt(R / gap) * u * model.width_m)) / w6
+    total = rigid_unloaded_stretch_Nm(g6, b6, dist6, rpm * math.pi / 30, 1e-6)
     r = kegel.Bearing("32216").friction(speed=f"{rpm} rpm", axial_load="6 kN", temperature="50 degC")
     sup = r.points[0]["lubricant_supply"]
     print(f"32216, 6 kN, {rpm} rpm: unloaded stretch (fully flooded, floor 1 um) {total:.2f} N m; kegel total "
