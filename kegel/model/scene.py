@@ -785,6 +785,35 @@ def _lift_off_error(g: BearingGeometry, axial_N: float, radial_N: float) -> str 
     return None
 
 
+def centrifugal_seating_error(g: BearingGeometry, axial_N: float, speed_rad_s: float) -> str | None:
+    """A force-controlled axial load must exceed
+    :func:`kegel.physics.tribology.centrifugal_axial_load_N`."""
+    from ..physics.tribology import centrifugal_axial_load_N  # noqa: PLC0415  (physics imports the model)
+
+    f_c = centrifugal_axial_load_N(g, speed_rad_s)
+    if axial_N > f_c:
+        return None
+    return (f"an axial load above the {f_c:.4g} N that the rollers' centrifugal force puts on the cup at "
+            f"{abs(speed_rad_s) / RPM_TO_RAD_S:.6g} rpm (Z m r_M w_c^2 tan(alpha_o); here Fa = {axial_N:.4g} N): below it "
+            "the rollers leave the cone and a single tapered roller bearing has no quasi-static state; use a "
+            "displacement-controlled axial offset (operating.axial_offset; axial_offset_m in Python), or the "
+            "dynamic solution with the ring held axially (dynamic.hold_axial = true: the partner bearing)")
+
+
+def _check_centrifugal_seating(reader: Reader, op: OperatingSpec, points: list[OperatingPoint],
+                               g: BearingGeometry) -> None:
+    """Every force-controlled quasi-static point's axial load above the rollers' centrifugal
+    share (:func:`kegel.physics.tribology.centrifugal_axial_load_N`), checked for the scene so that ``kegel check``
+    refuses what the run's load distribution cannot solve."""
+    for p in points:
+        if p.axial_load_N is None:
+            continue
+        expected = centrifugal_seating_error(g, p.axial_load_N, p.speed_rad_s)
+        if expected is not None:
+            s = op.axial_load
+            raise reader.error(s.key, s.written, f"at every point (here point {p.index}): {expected}")
+
+
 def _static_load_error(g: BearingGeometry, bearing: BearingData, axial_N: float, radial_N: float) -> str | None:
     """The ISO 76 static equivalent load within the basic static load rating C0r."""
     p0 = static_equivalent_load_N(g, axial_N, radial_N)
@@ -921,6 +950,8 @@ def validate_scene(spec: SceneSpec) -> Scene:
     else:
         lubrication = Lubrication(mode="minimum_quantity", oil_level_m=0.0, oil_level_as_written="none")
     fidelity = _fidelity(reader, spec.model, lubrication.mode)
+    if fidelity.solution == "quasi_static":
+        _check_centrifugal_seating(reader, spec.operating, points, g)
     _check_dynamic_profiles(reader, spec.dynamic_written, spec.dynamic, bearing, g)
 
     stem = Path(spec.source).stem if spec.source != "<dict>" else "scene"

@@ -470,7 +470,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     # the limits of a dynamic scene (kegel.scene), the same for the Python API
     from ..model.lubricant import lubricant_state
     from ..model.scene import (MAX_DYNAMIC_DURATION_S, MAX_DYNAMIC_OUTPUTS, MIN_OUTPUT_INTERVAL_S, _speed_limit_text,
-                        max_speed_rpm, static_equivalent_load_N)
+                               centrifugal_seating_error, max_speed_rpm, static_equivalent_load_N)
     from ..base.units import RPM_TO_RAD_S
 
     if (axial_N is None) == (axial_offset_m is None):
@@ -528,7 +528,11 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     initial = "quasi_static"
     wc, spins = 0.0, [0.0] * g.roller_count
     wc_pure = _pure_rolling(g, w_start)[0]
+    # a force-controlled load at or below the rollers' centrifugal share has no quasi-static state
+    seated = axial_N is None or centrifugal_seating_error(g, float(axial_N), w_start) is None
     try:
+        if abs(w_start) > 0 and not seated:
+            raise RuntimeError("the axial load does not seat the rollers at the start speed")
         if abs(w_start) > 0:
             _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
                                      inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,

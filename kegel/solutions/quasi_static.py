@@ -329,6 +329,12 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
                           speed_rad_s=inner_speed_rad_s, axial_N=axial_N, axial_offset_m=axial_offset_m,
                           radial_N=radial_N, tilt_moment_Nm=tilt_moment_Nm, misalignment_rad=misalignment_rad,
                           names={"speed": "inner_speed_rad_s"})
+    if axial_N is not None:  # a force-controlled load must hold the rollers on the cone at speed
+        from ..model.scene import centrifugal_seating_error
+
+        expected = centrifugal_seating_error(g, float(axial_N), inner_speed_rad_s)
+        if expected is not None:
+            raise KegelInputError("<argument>", "axial_N", axial_N, expected)
     ring_states = ring_lubricant_states(lubricant, temperature_K, inner_ring_temperature_K, outer_ring_temperature_K)
     model = model or bearing_model(g, bearing, material, slices=slices, method=method)
     warm = data is not None
@@ -395,6 +401,13 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         problems = plausibility_failures(f, inner_speed_rad_s, dist.residual, dist.roller_residual_max)
         if not problems:
             break
+    if f["power_input_W"] == 0.0:
+        # nothing to balance: the contact forces of a vanishing load underflow (a few 1e-17 N of
+        # axial load on the 32216), and a record without power would carry no figure worth keeping
+        raise KegelSolverError(
+            f"no power enters the bearing (drive torque {f['drive_torque_Nm']:.6g} N m at {inner_speed_rad_s:.6g} "
+            f"rad/s; Fa = {axial_N} N, axial offset = {axial_offset_m} m, Fr = {radial_N} N): the load is too small "
+            "for the contact models to resolve a contact force")
     res = BearingFrictionResult(
         drive_torque_Nm=f["drive_torque_Nm"],
         outer_ring_torque_Nm=f["outer_ring_torque_Nm"],

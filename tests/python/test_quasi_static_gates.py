@@ -230,3 +230,55 @@ def test_radial_and_misalignment_sweeps_solve_without_failures():
         # the rib cell model's work leaves up to 4e-5 under misalignment (7.7e-6 at 4 mrad,
         # where no roller locks): the gate's tolerance
         assert abs(r.power_balance_error) < GATE_TOLERANCES["power_balance"]
+
+
+@pytest.mark.parametrize("designation, speed_rpm", [("32216", 655.0), ("32216", 3000.0), ("32208", 3000.0)])
+def test_centrifugal_share_of_the_axial_load_bounds_the_load_distribution(designation, speed_rpm):
+    """A single TRB under a force-controlled axial load needs Fa > Z m r_M w_c^2 tan(alpha_o): the
+    bound kegel check applies is the one the load distribution shows (it fails below 0.9 of it and
+    solves at 1.02 of it), and the hand value for the 32216 at 655 rpm is kept."""
+    import math
+
+    from kegel.errors import KegelInputError, KegelSolverError
+    from kegel.model.data import load_bearing, load_material
+    from kegel.model.geometry import derive_geometry
+    from kegel.physics.tribology import cage_speed_rad_s, centrifugal_axial_load_N
+    from kegel.quasi_static import load_distribution
+
+    bearing, material = load_bearing(designation), load_material("bearing_steel")
+    g = derive_geometry(bearing, material)
+    w = speed_rpm * math.pi / 30
+    limit_N = centrifugal_axial_load_N(g, w)
+    if (designation, speed_rpm) == ("32216", 655.0):
+        # by hand: w_c = 68.59 rad/s x 91.97 / (2 x 108.5) = 29.07 rad/s; F_c = 40.48 g x 54.25 mm x w_c^2
+        # = 1.856 N per roller; x 16 rollers x tan(15.64 deg) = 0.2800
+        assert limit_N == pytest.approx(16 * 0.04048 * 0.05425 * 29.07 ** 2 * 0.2800, rel=2e-3)
+    assert centrifugal_axial_load_N(g, -w) == limit_N
+    wc = cage_speed_rad_s(g, w)
+    with pytest.raises(KegelSolverError):
+        load_distribution(g, bearing, material, axial_N=0.9 * limit_N, radial_N=0.0, cage_speed_rad_s=wc)
+    d = load_distribution(g, bearing, material, axial_N=1.02 * limit_N, radial_N=0.0, cage_speed_rad_s=wc)
+    assert d.inner_N.min() > 0.0
+    # the public friction function refuses what the load distribution cannot solve, naming the argument
+    lubricant, friction = kegel.model.data.load_lubricant("FVA3"), kegel.physics.tribology.load_friction("steel_mineral_oil")
+    with pytest.raises(KegelInputError) as exc:
+        kegel.quasi_static.bearing_friction(g, bearing, material, lubricant, friction, temperature_K=323.15,
+                                            inner_speed_rad_s=w, axial_N=0.5 * limit_N, slices=4, rib_cells=4)
+    assert exc.value.key == "axial_N" and "centrifugal" in exc.value.expected
+
+
+def test_scene_refuses_an_axial_load_the_rollers_centrifugal_force_outweighs(tmp_path):
+    """kegel check and run refuse, at the scene's key, a force-controlled point whose axial load
+    does not seat the rollers; a displacement-controlled point at the same speed solves."""
+    from conftest import call_kegel
+
+    path = tmp_path / "light.toml"
+    path.write_text('[bearing]\ndesignation = "32216"\n[lubricant]\nname = "FVA3"\n[operating]\n'
+                    'speed = ["655 rpm", "3000 rpm"]\naxial_load = "0.1 kN"\ntemperature = "50 degC"\n'
+                    '[lubrication]\nmode = "minimum_quantity"\n[model]\nfidelity = "fast"\n')
+    code, out, err = call_kegel("check", str(path))
+    assert code == 2
+    assert "key 'operating.axial_load' = '0.1 kN'" in err and "174.4 N" in err and "here point 1" in err
+    path.write_text(path.read_text().replace('axial_load = "0.1 kN"', 'axial_offset = "0.005 mm"'))
+    res = kegel.run.run_scene(load_scene(path), write=False, progress=False)
+    assert all(p["converged"] for p in res.points), [p.get("failure") for p in res.points]
