@@ -61,6 +61,7 @@ __all__ = [
     "apex_residual",
     "envelope_violations",
     "roller_half_angle_rad",
+    "centrifugal_axial_load_N",
 ]
 
 
@@ -139,6 +140,12 @@ class BearingGeometry:
     def roller_axis_unit(self) -> np.ndarray:
         """Unit vector of the roller axis in frame B, from the small to the large end."""
         return np.array([math.cos(self.roller_axis_angle_rad), math.sin(self.roller_axis_angle_rad)])
+
+    @property
+    def pure_rolling_cage_ratio(self) -> float:
+        """Cage over inner-ring speed of apex-matched pure rolling with the outer ring fixed,
+        ``d_i / (2 d_m)`` (``d_i`` the inner raceway's diameter at the roller mid-length)."""
+        return self.inner_raceway_diameter_mid_m / (2.0 * self.pitch_diameter_m)
 
     def roller_mid_point(self) -> np.ndarray:
         """Roller mid-point M in frame B."""
@@ -439,3 +446,18 @@ def geometry_table(g: BearingGeometry) -> list[tuple[str, float, str]]:
 def field_names() -> list[str]:
     """Names of the :class:`BearingGeometry` fields (the JSON keys of ``kegel bearing``)."""
     return [f.name for f in fields(BearingGeometry)]
+
+
+def centrifugal_axial_load_N(g: BearingGeometry, speed_rad_s: float) -> float:
+    """The axial load the rollers' centrifugal force alone puts on the cup of a single TRB,
+    ``Z m r_M w_c^2 tan(alpha_o)`` [N], the cage at its pure-rolling speed
+    (:attr:`BearingGeometry.pure_rolling_cage_ratio` of the inner ring's ``speed_rad_s``), the
+    roller's mass at the pitch radius ``r_M``.
+
+    Each roller's cup contact carries at least its centrifugal force radially, so at least that
+    force times tan(alpha_o) axially, and the cup's axial reaction is the axial load. A
+    force-controlled axial load at or below it leaves no quasi-static state with the rollers
+    seated on the cone (kegel's load distribution fails from about 0.96 of it).
+    """
+    w_c = abs(float(speed_rad_s)) * g.pure_rolling_cage_ratio
+    return g.roller_count * g.roller_mass_kg * 0.5 * g.pitch_diameter_m * w_c ** 2 * math.tan(g.cup_angle_rad)

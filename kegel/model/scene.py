@@ -97,7 +97,7 @@ from ..base._toml import read_toml
 from .data import (BearingData, LubricantData, MaterialData, bearing_from_scene, load_bearing, load_lubricant,
                    load_material, lubricant_from_scene)
 from ..base.errors import KegelInputError
-from .geometry import BearingGeometry, derive_geometry
+from .geometry import BearingGeometry, centrifugal_axial_load_N, derive_geometry
 from .lubricant import TEMPERATURE_RANGE_DEGC, lubricant_state  # one temperature range for every entry point
 from ..base.limits import MAX_SPEED_FACTOR_RPM_MM as _MAX_SPEED_FACTOR_RPM_MM
 from .scene_model import (ALLOWED_KEYS, AUTO_TOLERANCE, HYDRAULIC_METHODS, INT_RANGES, MAX_DYNAMIC_DURATION_S,  # noqa: F401
@@ -786,10 +786,7 @@ def _lift_off_error(g: BearingGeometry, axial_N: float, radial_N: float) -> str 
 
 
 def centrifugal_seating_error(g: BearingGeometry, axial_N: float, speed_rad_s: float) -> str | None:
-    """A force-controlled axial load must exceed
-    :func:`kegel.physics.tribology.centrifugal_axial_load_N`."""
-    from ..physics.tribology import centrifugal_axial_load_N  # noqa: PLC0415  (physics imports the model)
-
+    """A force-controlled axial load must exceed :func:`kegel.model.geometry.centrifugal_axial_load_N`."""
     f_c = centrifugal_axial_load_N(g, speed_rad_s)
     if axial_N > f_c:
         return None
@@ -803,7 +800,7 @@ def centrifugal_seating_error(g: BearingGeometry, axial_N: float, speed_rad_s: f
 def _check_centrifugal_seating(reader: Reader, op: OperatingSpec, points: list[OperatingPoint],
                                g: BearingGeometry) -> None:
     """Every force-controlled quasi-static point's axial load above the rollers' centrifugal
-    share (:func:`kegel.physics.tribology.centrifugal_axial_load_N`), checked for the scene so that ``kegel check``
+    share (:func:`kegel.model.geometry.centrifugal_axial_load_N`), checked for the scene so that ``kegel check``
     refuses what the run's load distribution cannot solve."""
     for p in points:
         if p.axial_load_N is None:

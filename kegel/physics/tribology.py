@@ -36,7 +36,6 @@ __all__ = [
     "load_friction",
     "axial_roller_loads",
     "cage_speed_rad_s",
-    "centrifugal_axial_load_N",
     "evaluate_raceway_contact",
     "raceway_line_point",
     "MAX_CONTACT_PRESSURE_PA",
@@ -176,18 +175,7 @@ def cage_speed_rad_s(g: BearingGeometry, inner_speed_rad_s: float) -> float:
 
     inner_speed_rad_s = check_speed_factor(inner_speed_rad_s, g.pitch_diameter_m, source="<argument>",
                                            key="inner_speed_rad_s", designation=str(g.designation))
-    return inner_speed_rad_s * g.inner_raceway_diameter_mid_m / (2.0 * g.pitch_diameter_m)
-
-
-def centrifugal_axial_load_N(g: BearingGeometry, speed_rad_s: float) -> float:
-    """The axial load the rollers' centrifugal force alone puts on the cup of a single TRB,
-    Z m r_M w_c^2 tan(alpha_o) [N] (cage at its pure-rolling speed, roller mass at the pitch
-    radius r_M): each roller's cup contact carries at least its centrifugal force radially, so
-    at least that force times tan(alpha_o) axially, and the cup's axial reaction is the axial
-    load. A force-controlled axial load at or below it leaves no quasi-static solution with
-    the rollers seated on the cone (kegel's load distribution fails from about 0.96 of it)."""
-    w_c = cage_speed_rad_s(g, abs(float(speed_rad_s)))
-    return g.roller_count * g.roller_mass_kg * 0.5 * g.pitch_diameter_m * w_c ** 2 * math.tan(g.cup_angle_rad)
+    return inner_speed_rad_s * g.pure_rolling_cage_ratio
 
 
 def axial_roller_loads(g: BearingGeometry, axial_load_N: float) -> dict[str, float]:

@@ -241,8 +241,8 @@ def test_centrifugal_share_of_the_axial_load_bounds_the_load_distribution(design
 
     from kegel.errors import KegelInputError, KegelSolverError
     from kegel.model.data import load_bearing, load_material
-    from kegel.model.geometry import derive_geometry
-    from kegel.physics.tribology import cage_speed_rad_s, centrifugal_axial_load_N
+    from kegel.model.geometry import centrifugal_axial_load_N, derive_geometry
+    from kegel.physics.tribology import cage_speed_rad_s
     from kegel.quasi_static import load_distribution
 
     bearing, material = load_bearing(designation), load_material("bearing_steel")
