@@ -475,6 +475,7 @@ GATE_TOLERANCES = {
     "torque_balance": 1e-3,    # |drive - outer-ring torque| / |drive torque| (the cage carries no net moment)
     "load_residual": 1e-6,     # ring equilibrium residual / load scale
     "roller_residual": 1e-6,   # largest roller equilibrium residual / load scale
+    "contact_power": 1e-9,     # most negative power of one mechanism in one contact / input power
 }
 
 
@@ -510,6 +511,17 @@ def plausibility_failures(f: dict, inner_speed_rad_s: float, load_residual: floa
         if abs(pb) > GATE_TOLERANCES["power_balance"]:
             out.append(f"power balance: dissipated {P_d:.6g} W, input {P_in:.6g} W (error {pb:+.3e}, tolerance "
                        f"{GATE_TOLERANCES['power_balance']:g})")
+    # the second law: a friction mechanism dissipates, it never drives (a light load at a low
+    # speed once converged with the outer raceway's rolling "resistance" driving a cage at three
+    # times its pure-rolling speed: the 32216 at 10 rpm, 30 N)
+    floor = -GATE_TOLERANCES["contact_power"] * abs(P_in)
+    negative = [(c, m, P) for c, mechs in f.get("power_W", {}).items() for m, P in mechs.items() if P < floor]
+    if f.get("cage_power_W", 0.0) < floor:
+        negative.append(("cage", "pocket", f["cage_power_W"]))
+    if negative:
+        c, m, P = min(negative, key=lambda x: x[2])
+        out.append(f"negative dissipation: {len(negative)} mechanism(s) deliver power, the largest {m} at the {c} "
+                   f"({P:.6g} W of {P_in:.6g} W input; a friction mechanism only dissipates)")
     if not load_residual <= GATE_TOLERANCES["load_residual"]:
         out.append(f"ring equilibrium residual {load_residual:.3e} of the load (tolerance "
                    f"{GATE_TOLERANCES['load_residual']:g})")

@@ -31,6 +31,7 @@ def test_gates_pass_a_balanced_solution():
     ({"drive_torque_Nm": -25.68, "outer_ring_torque_Nm": -25.68, "power_input_W": -5000.0}, "oppose the rotation"),
     ({"drive_torque_Nm": float("nan")}, "non-finite"),
     ({"status": 1, "locked_rollers": 2}, "did not converge"),
+    ({"power_W": {"outer_raceway": {"ehl_rolling": -32.1, "ehl_sliding": 10.4}}}, "negative dissipation"),
 ])
 def test_gates_name_each_failure(change, words):
     f = {**_good(), **change}
