@@ -12,6 +12,7 @@ run of the same case (``benchmarks/results/cfd_gap_study/<case>/results.json``, 
     .venv/bin/python benchmarks/cfd_start_study.py 500:0.08:3 1000:0.08:3 4000:0.08:3 0.02:3 ...
     .venv/bin/python benchmarks/cfd_start_study.py --from-rest 4000:0.08:3 --max-iterations 4000
     .venv/bin/python benchmarks/cfd_start_study.py --report
+    .venv/bin/python benchmarks/cfd_start_study.py --windows 0.02:4
 
 ``--from-rest``: the gap study's stored run of the point (from rest, ``results/cfd/gap_study/``)
 copied to ``results/cfd/start_study/<case>_start_rest`` (once) and run on there until the steady
@@ -76,7 +77,23 @@ def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterat
     dest = STORE / name
     dest.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(case / "results.json", dest / "results.json")
+    store_windows(speed_rpm, gap, cells)
     return dest / "results.json"
+
+
+def store_windows(speed_rpm: float, gap: float, cells: int) -> Path:
+    """The 100-iteration window means of every wall's torque, the loss and the balance of the
+    point's cage-start case (``benchmarks/cfd_flooded_convergence.py``'s table), stored beside its
+    results.json: how far a run that stopped short of the steady test still had to go."""
+    from cfd_flooded_convergence import wall_histories, window_table
+    from kegel.io import atomic_write_json
+
+    name = case_name(gap, cells, "tiny", True, speed_rpm)
+    rows = window_table(wall_histories(CASES / f"{name}_start_cage"))
+    dest = STORE / name
+    dest.mkdir(parents=True, exist_ok=True)
+    atomic_write_json(dest / "windows.json", {"case": f"{name}_start_cage", "window_iterations": 100, "rows": rows})
+    return dest / "windows.json"
 
 
 def continue_from_rest(speed_rpm: float, gap: float, cells: int, max_iterations: int) -> Path:
@@ -148,7 +165,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--report", action="store_true", help="only re-read the stored results")
     ap.add_argument("--from-rest", nargs="+", default=[], metavar="POINT",
                     help="run the gap study's stored run (from rest) of these points on until steady")
+    ap.add_argument("--windows", nargs="+", default=[], metavar="POINT",
+                    help="only store the window means of these points' cage-start cases (windows.json)")
     args = ap.parse_args(argv)
+    if args.windows:
+        for text in args.windows:
+            print(store_windows(*parse_point(text)), file=sys.stderr)
+        return 0
     for text in [] if args.report else args.from_rest:
         continue_from_rest(*parse_point(text), args.max_iterations)
     for text in [] if args.report else args.points:
