@@ -402,8 +402,9 @@ def bearing_friction(g: BearingGeometry, bearing: BearingData, material: Materia
         if not problems:
             break
     if f["power_input_W"] == 0.0:
-        # nothing to balance: the contact forces of a vanishing load underflow (a few 1e-17 N of
-        # axial load on the 32216), and a record without power would carry no figure worth keeping
+        # nothing to balance: the contact forces of a vanishing load underflow, and a record
+        # without power would carry no figure worth keeping (a force-controlled load that small
+        # is refused before, below the rollers' centrifugal share; an axial offset is not)
         raise KegelSolverError(
             f"no power enters the bearing (drive torque {f['drive_torque_Nm']:.6g} N m at {inner_speed_rad_s:.6g} "
             f"rad/s; Fa = {axial_N} N, axial offset = {axial_offset_m} m, Fr = {radial_N} N): the load is too small "
@@ -479,6 +480,38 @@ GATE_TOLERANCES = {
 }
 
 
+#: A roller spinning at less than this share of its pure-rolling spin does not roll (it stalls or
+#: turns backwards); named in the negative-dissipation gate's message.
+ROLLING_SPIN_SHARE = 0.5
+
+
+def _spin_diagnosis(f: dict) -> str:
+    """Why a light point's rolling moments drive, when its rollers do not roll: "" otherwise.
+
+    The rolling resistance acts as a shift of the normal force towards the inlet, set by the sign
+    of the entrainment speed u_m, and does the work M (u1/R1 + u2/R2). A roller that spins
+    backwards (or stalls) leaves u_m small and of either sign while the pair's relative rolling
+    rate is large: the shift then delivers power and holds the roller in that state. Measured on
+    the 32216 (FVA 3, 50 degC): at 10 rpm / 30 N the rollers spin at -0.52 of their pure-rolling
+    spin, at 100 rpm / 30 N at -0.76, at 100 rpm / 300 N at +0.001 with the cage at the inner
+    ring's speed. Turning the shift against the relative rolling rate instead removed the negative
+    power but left no equilibrium (power balance off by 2-23 %): at such loads the quasi-static
+    model found no rolling solution.
+    """
+    spin, pure = f.get("roller_spin_rad_s"), f.get("roller_spin_pure_rolling_rad_s")
+    if spin is None or pure is None or len(spin) == 0 or len(spin) != len(pure):
+        return ""
+    ratios = [s / p for s, p in zip(spin, pure) if p != 0.0 and math.isfinite(s / p)]
+    if not ratios or min(ratios) >= ROLLING_SPIN_SHARE:
+        return ""
+    lo, hi = min(ratios), max(ratios)
+    share = f"{lo:.3g}" if f"{lo:.3g}" == f"{hi:.3g}" else f"{lo:.3g} to {hi:.3g}"
+    what = "spinning backwards" if lo < 0.0 else "nearly stalled"
+    return (f"; the rollers do not roll: their spin is {share} of its pure-rolling value ({what}), the load "
+            "too light to make them roll at this speed; the quasi-static model (rollers in steady rolling) "
+            "found no rolling solution")
+
+
 def plausibility_failures(f: dict, inner_speed_rad_s: float, load_residual: float,
                           roller_residual: float = 0.0) -> list[str]:
     """The plausibility gates of one quasi-static friction solution; an empty list when it passes.
@@ -513,7 +546,7 @@ def plausibility_failures(f: dict, inner_speed_rad_s: float, load_residual: floa
                        f"{GATE_TOLERANCES['power_balance']:g})")
     # the second law: a friction mechanism dissipates, it never drives (a light load at a low
     # speed once converged with the outer raceway's rolling "resistance" driving a cage at three
-    # times its pure-rolling speed: the 32216 at 10 rpm, 30 N)
+    # times its pure-rolling speed: the 32216 at 10 rpm, 30 N, its rollers spinning backwards)
     floor = -GATE_TOLERANCES["contact_power"] * abs(P_in)
     negative = [(c, m, P) for c, mechs in f.get("power_W", {}).items() for m, P in mechs.items() if P < floor]
     if f.get("cage_power_W", 0.0) < floor:
@@ -521,7 +554,8 @@ def plausibility_failures(f: dict, inner_speed_rad_s: float, load_residual: floa
     if negative:
         c, m, P = min(negative, key=lambda x: x[2])
         out.append(f"negative dissipation: {len(negative)} mechanism(s) deliver power, the largest {m} at the {c} "
-                   f"({P:.6g} W of {P_in:.6g} W input; a friction mechanism only dissipates)")
+                   f"({P:.6g} W of {P_in:.6g} W input; a friction mechanism only dissipates)"
+                   + _spin_diagnosis(f))
     if not load_residual <= GATE_TOLERANCES["load_residual"]:
         out.append(f"ring equilibrium residual {load_residual:.3e} of the load (tolerance "
                    f"{GATE_TOLERANCES['load_residual']:g})")
