@@ -525,33 +525,33 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
     # inner ring, which is the skidding case), from the load distribution at rest, turning at
     # pure-rolling kinematics: the dynamic run then finds its own state
     qs_data = _core.quasi_static.BearingData(qs_model)
-    initial = "quasi_static"
-    wc, spins = 0.0, [0.0] * g.roller_count
-    wc_pure = _pure_rolling(g, w_start)[0]
     # a force-controlled load at or below the rollers' centrifugal share has no quasi-static state
     seated = axial_N is None or centrifugal_seating_error(g, float(axial_N), w_start) is None
-    try:
-        if abs(w_start) > 0 and not seated:
-            raise RuntimeError("the axial load does not seat the rollers at the start speed")
-        if abs(w_start) > 0:
-            _, fr = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
-                                     inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,
-                                     radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model,
-                                     data=qs_data, cage=cage, inner_ring_temperature_K=inner_ring_temperature_K,
-                                     outer_ring_temperature_K=outer_ring_temperature_K)
-            if not fr.converged:
-                raise RuntimeError("the quasi-static kinematics did not converge")
-            wc, spins = fr.cage_speed_rad_s, list(fr.roller_spin_rad_s)
-            wc_pure = fr.cage_speed_pure_rolling_rad_s
-        else:
-            load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m,
-                              radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
-    except RuntimeError:
-        qs_data = _core.quasi_static.BearingData(qs_model)
+    start = None  # the converged quasi-static solution at the start speed, where there is one
+    if abs(w_start) > 0 and seated:
+        try:
+            _, start = bearing_friction(g, bearing, material, lubricant, friction, temperature_K=temperature_K,
+                                        inner_speed_rad_s=w_start, axial_N=axial_N, axial_offset_m=axial_offset_m,
+                                        radial_N=radial_N, misalignment_rad=misalignment_rad, model=qs_model,
+                                        data=qs_data, cage=cage, inner_ring_temperature_K=inner_ring_temperature_K,
+                                        outer_ring_temperature_K=outer_ring_temperature_K)
+        except RuntimeError:  # KegelSolverError: no load distribution or no power at the start
+            start = None
+    if start is not None and start.converged:
+        initial = "quasi_static"
+        wc, spins = start.cage_speed_rad_s, list(start.roller_spin_rad_s)
+        wc_pure = start.cage_speed_pure_rolling_rad_s
+    else:
+        wc_pure = _pure_rolling(g, w_start)[0]
+        qs_data = _core.quasi_static.BearingData(qs_model)  # a failed attempt's state is no start
         load_distribution(g, bearing, material, axial_N=axial_N, axial_offset_m=axial_offset_m, radial_N=radial_N,
                           misalignment_rad=misalignment_rad, model=qs_model, data=qs_data)
-        wc, spins = _pure_rolling(g, w_start)
-        initial = "load distribution at rest, pure rolling"
+        if abs(w_start) > 0:
+            wc, spins = _pure_rolling(g, w_start)
+            initial = "load distribution at rest, pure rolling"
+        else:
+            wc, spins = 0.0, [0.0] * g.roller_count
+            initial = "quasi_static"
     y0 = np.asarray(D.initial_state(model, qs_data, wc, spins))
     drive = D.RingDrive()
     drive.time_s = list(prof[:, 0])
