@@ -157,9 +157,9 @@ def test_steady_state_agrees_with_the_quasi_static_solution(setup, speed_rpm, te
     st = r.steady
     assert st["outer_ring_torque_Nm"] == pytest.approx(q.outer_ring_torque_Nm, rel=0.03)
     assert st["drive_torque_Nm"] == pytest.approx(q.drive_torque_Nm, rel=0.03)
-    assert abs(st["power_balance_error"]) < 0.01
+    assert abs(st["power_balance_error"]) < 1e-3
     # the contact work equals the sum of the mechanism powers (the breakdown explains the torque)
-    assert st["contact_work_W"] == pytest.approx(st["power_dissipated_W"], rel=0.01)
+    assert st["contact_work_W"] == pytest.approx(st["power_dissipated_W"], rel=1e-3)
     assert np.isfinite(r.series["kinetic_energy_J"]).all()
 
 
@@ -195,10 +195,19 @@ def test_hard_cases_short_versions(setup, case):
         r = _hard(setup, speed_profile=[(0, 4000 * RPM)], duration_s=3e-3, axial_N=100.0, hold_axial=True)
         # the centrifugal force carries the rollers to the cup: the inner raceway loses load
         assert r.series["roller_outer_N"][-1].min() > r.series["roller_inner_N"][-1].max()
+        # skidding rollers: the rolling mechanisms' powers are the work of the shifted normal
+        # forces, so the power balance closes (measured 2e-4; counted at the pure-rolling rate it
+        # was off by -9.9 %, the contacts' work by 1 %)
+        assert abs(r.steady["power_balance_error"]) < 1e-3, r.steady["power_balance_error"]
+        assert r.steady["contact_work_W"] == pytest.approx(r.steady["power_contacts_W"] + r.steady["damping_power_W"],
+                                                           rel=2e-4)
     elif case == "radial_most_rollers_unloaded":
         r = _hard(setup, speed_profile=[(0, 2000 * RPM)], duration_s=3e-3, axial_offset_m=5e-6, radial_N=16000.0)
         q = r.series["roller_inner_N"][-1]
         assert (q < 1e-3 * q.max()).sum() >= g_count(setup) // 2
+        # unloaded rollers slip: the balance closes (measured -2.2e-4; -2.4 % counted at the
+        # pure-rolling rate)
+        assert abs(r.steady["power_balance_error"]) < 1e-3, r.steady["power_balance_error"]
     elif case == "tilted_edge_loading":
         r = _hard(setup, speed_profile=[(0, 2000 * RPM)], duration_s=3e-3, axial_N=6000.0, misalignment_rad=2e-3)
         q = r.series["roller_inner_N"][-1]
