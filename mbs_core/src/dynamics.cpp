@@ -226,10 +226,10 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
         Tr -= (g.p_RC - ring.centre()).cross(ft) + (pn - ring.centre()).cross(fn);
       }
       if (acc) {
-        const Vec3 vo_t = outer ? Vec3::Zero() : ring.v_at(g.p_RC), vo_n = outer ? Vec3::Zero() : ring.v_at(pn);
-        acc->contact_W -= ft.dot(v_roller(g.p_RC) - vo_t) + fn.dot(v_roller(pn) - vo_n);
-      }
-      if (acc) {
+        // the ring's velocity relative to the roller's at the contact point and at the shifted one
+        const Vec3 rel_p = (outer ? Vec3::Zero() : ring.v_at(g.p_RC)) - v_roller(g.p_RC);
+        const Vec3 rel_n = (outer ? Vec3::Zero() : ring.v_at(pn)) - v_roller(pn);
+        acc->contact_W += ft.dot(rel_p) + fn.dot(rel_n);
         const double tz = outer ? (g.p_RC.cross(-ft) + pn.cross(-fn)).dot(Vec3::UnitZ())
                                 : -((g.p_RC - ring.centre()).cross(-ft) + (pn - ring.centre()).cross(-fn)).dot(ring.n);
         acc->torque[k] += tz;
@@ -242,9 +242,7 @@ int eval_roller(const DynamicModel& m, DynamicData& d, int j, double t, const do
           // pair's relative rolling rate; the pure-rolling rate (|u1| + |u2|) / (2 R') counted
           // before missed it under slip: the power balance was off by the cage slip (-0.34 % at
           // 1 kN on the 32208 at 2000 rpm, -41 % at 50 N)
-          const Vec3 vo_p = outer ? Vec3::Zero() : ring.v_at(g.p_RC);
-          const Vec3 vo_s = outer ? Vec3::Zero() : ring.v_at(pn);
-          const double P_shift = fn.dot((vo_s - v_roller(pn)) - (vo_p - v_roller(g.p_RC)));
+          const double P_shift = fn.dot(rel_n - rel_p);
           acc->P[k][BearingFriction::kEhlRolling] += P_shift * (M_ehl / Mrr);
           acc->P[k][BearingFriction::kSolidRolling] += P_shift * (s.M_solid_rolling_Nm / Mrr);
           acc->P[k][BearingFriction::kHysteresis] += P_shift * (s.M_hysteresis_Nm / Mrr);
