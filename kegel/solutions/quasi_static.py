@@ -27,7 +27,7 @@ from ..physics.tribology import cage_speed_rad_s as pure_rolling_cage_speed
 
 Q = _core.quasi_static
 
-__all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "MAX_SLICES", "bearing_friction", "bearing_model",
+__all__ = ["BearingFrictionResult", "LoadDistribution", "GATE_TOLERANCES", "ROLLING_SPIN_SHARE", "MAX_SLICES", "bearing_friction", "bearing_model",
            "load_distribution", "plausibility_failures", "ring_lubricant_states"]
 
 
