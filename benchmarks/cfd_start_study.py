@@ -13,6 +13,13 @@ run of the same case (``benchmarks/results/cfd_gap_study/<case>/results.json``, 
     .venv/bin/python benchmarks/cfd_start_study.py --from-rest 4000:0.08:3 --max-iterations 4000
     .venv/bin/python benchmarks/cfd_start_study.py --report
     .venv/bin/python benchmarks/cfd_start_study.py --windows 0.02:4
+    .venv/bin/python benchmarks/cfd_start_study.py 0.02:6 --map-from 4 --max-iterations 1500
+
+``--map-from CELLS``: the points start from the flow of the same gap's cage-start case with CELLS
+cells across the gap (its latest reconstructed time, mapped by ``mapFieldsPar``; ``initial_from``
+in the runner), in ``results/cfd/start_study/<case>_from_n<CELLS>``: a mesh too fine to run from
+the start within a session (6 cells across 0.02 D_w: 4.6 M cells, about 18 s an iteration) has
+only its gaps' refinement to settle.
 
 ``--from-rest``: the gap study's stored run of the point (from rest, ``results/cfd/gap_study/``)
 copied to ``results/cfd/start_study/<case>_start_rest`` (once) and run on there until the steady
@@ -57,31 +64,43 @@ def parse_point(text: str) -> tuple[float, float, int]:
     raise SystemExit(f"cfd_start_study: point {text!r}: expected [SPEED_RPM:]GAP_RATIO:CELLS, e.g. 500:0.08:3")
 
 
-def _point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int):
+def _point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int,
+           initial_from: Path | None = None):
     """The flooded study point as a :class:`kegel.cfd_cases.run.CfdPoint` (tiny background, sector)."""
     from kegel.cfd_cases.run import CfdPoint
 
     return CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
                     oil_level_m=None, mesh="tiny", n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
-                    cells_across_gap=cells, sector=True)
+                    cells_across_gap=cells, sector=True,
+                    initial_from=None if initial_from is None else str(initial_from.resolve()))
 
 
-def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int) -> Path:
-    """Run (or resume) one case from the runner's start; copy its results.json into ``STORE``."""
+def _suffix(map_from: int | None) -> str:
+    """The case folder's suffix: the runner's start (the oil turning with the cage) or a start
+    mapped from the cage-start case with ``map_from`` cells across the gap."""
+    return "_start_cage" if map_from is None else f"_from_n{map_from}"
+
+
+def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int,
+              map_from: int | None = None) -> Path:
+    """Run (or resume) one case from the runner's start, or from the flow of the same gap with
+    ``map_from`` cells across it; copy its results.json into ``STORE``."""
     from kegel.cfd_cases.run import run_case
 
-    p = _point(speed_rpm, gap, cells, n_procs, max_iterations)
     name = case_name(gap, cells, "tiny", True, speed_rpm)
-    case = CASES / f"{name}_start_cage"
+    source = None if map_from is None else CASES / f"{case_name(gap, map_from, 'tiny', True, speed_rpm)}_start_cage"
+    p = _point(speed_rpm, gap, cells, n_procs, max_iterations, source)
+    case = CASES / f"{name}{_suffix(map_from)}"
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
-    dest = STORE / name
+    stored = name if map_from is None else f"{name}{_suffix(map_from)}"
+    dest = STORE / stored
     dest.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(case / "results.json", dest / "results.json")
-    store_windows(speed_rpm, gap, cells)
+    store_windows(speed_rpm, gap, cells, map_from)
     return dest / "results.json"
 
 
-def store_windows(speed_rpm: float, gap: float, cells: int) -> Path:
+def store_windows(speed_rpm: float, gap: float, cells: int, map_from: int | None = None) -> Path:
     """The 100-iteration window means of every wall's torque, the loss and the balance of the
     point's cage-start case (``benchmarks/cfd_flooded_convergence.py``'s table), stored beside its
     results.json: how far a run that stopped short of the steady test still had to go."""
@@ -89,10 +108,11 @@ def store_windows(speed_rpm: float, gap: float, cells: int) -> Path:
     from kegel.io import atomic_write_json
 
     name = case_name(gap, cells, "tiny", True, speed_rpm)
-    rows = window_table(wall_histories(CASES / f"{name}_start_cage"))
-    dest = STORE / name
+    case = f"{name}{_suffix(map_from)}"
+    rows = window_table(wall_histories(CASES / case))
+    dest = STORE / (name if map_from is None else case)
     dest.mkdir(parents=True, exist_ok=True)
-    atomic_write_json(dest / "windows.json", {"case": f"{name}_start_cage", "window_iterations": 100, "rows": rows})
+    atomic_write_json(dest / "windows.json", {"case": case, "window_iterations": 100, "rows": rows})
     return dest / "windows.json"
 
 
@@ -166,17 +186,19 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--from-rest", nargs="+", default=[], metavar="POINT",
                     help="run the gap study's stored run (from rest) of these points on until steady")
     ap.add_argument("--windows", nargs="+", default=[], metavar="POINT",
-                    help="only store the window means of these points' cage-start cases (windows.json)")
+                    help="only store the window means of these points' cases (windows.json)")
+    ap.add_argument("--map-from", type=int, metavar="CELLS",
+                    help="start the points from the same gap's cage-start case with CELLS cells across it")
     args = ap.parse_args(argv)
     if args.windows:
         for text in args.windows:
-            print(store_windows(*parse_point(text)), file=sys.stderr)
+            print(store_windows(*parse_point(text), args.map_from), file=sys.stderr)
         return 0
     for text in [] if args.report else args.from_rest:
         continue_from_rest(*parse_point(text), args.max_iterations)
     for text in [] if args.report else args.points:
         t0 = time.monotonic()
-        run_point(*parse_point(text), args.np, args.max_iterations)
+        run_point(*parse_point(text), args.np, args.max_iterations, args.map_from)
         print(f"cfd_start_study: {text} done in {time.monotonic() - t0:.0f} s", file=sys.stderr, flush=True)
     rows = report()
     command = " ".join([".venv/bin/python benchmarks/cfd_start_study.py", *(argv if argv is not None else sys.argv[1:])])

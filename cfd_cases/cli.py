@@ -86,8 +86,6 @@ def _point_from_args(args: argparse.Namespace, speed_text: str, level_text: str)
         if init:
             raise KegelInputError(src, "--start-on", start, "either --start-on or --initial-from, not both")
     if init:
-        if level is None:
-            raise KegelInputError(src, "--initial-from", init, "an oil-bath point (a flooded run starts with the oil turning with the cage)")
         if not (Path(init) / "kegel-case.json").is_file():
             raise KegelInputError(src, "--initial-from", init, "a kegel CFD case folder (with kegel-case.json)")
         extra["initial_from"] = str(Path(init).resolve())
@@ -159,11 +157,11 @@ def _liebrecht(point) -> dict[str, float]:
 
 
 def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
-    """``--start-on MESH``: run the oil-bath point on the coarser mesh first and start the
-    requested mesh from its state at the steady stop (``initial_from``; the regular write before
-    the stop point, see :func:`~kegel.cfd_cases.run.mapping_source_time`). The spin-up of the oil and its
-    transport around the housing (tenths of a second of simulated time) then cost the coarse
-    mesh's time; the fine mesh only has to settle (three steady windows). Returns the point to
+    """``--start-on MESH``: run the point on the coarser mesh first and start the requested mesh
+    from its state at the steady stop (``initial_from``; the regular write before the stop
+    point, see :func:`~kegel.cfd_cases.run.mapping_source_time`). The spin-up of the oil (and, in
+    an oil bath, its transport around the housing: tenths of a second of simulated time) then
+    costs the coarse mesh's time; the fine mesh only has to settle. Returns the point to
     run and a summary of the start run (``None`` when the case already exists and resumes)."""
     import dataclasses
     import time
@@ -173,9 +171,6 @@ def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
 
     start = getattr(args, "start_on", None)
     if not start:
-        return point, None
-    if point.flooded:
-        print("cfd: --start-on applies to oil-bath points; the flooded point starts with the oil turning with the cage", file=sys.stderr)
         return point, None
     start_case = case.with_name(f"{case.name}_start_{start}")
     fine = dataclasses.replace(point, initial_from=str(start_case.resolve()))
@@ -486,10 +481,10 @@ def add_cfd_parser(sub, common) -> None:
         sp.add_argument("--max-interface-courant", type=float,
                         help="oil bath: time-step limit as a Courant number at the free surface (default 1)")
         sp.add_argument("--initial-from",
-                        help="oil bath: start from the last state of a run of the same point on another mesh "
+                        help="start from the last state of a run of the same point on another mesh "
                              "(case folder), e.g. the tiny run before a small one")
         sp.add_argument("--start-on", metavar="MESH",
-                        help="oil bath: run the point on this coarser mesh first (to a steady loss torque) "
+                        help="run the point on this coarser mesh first (to a steady loss torque) "
                              "and start --mesh from its last state; e.g. --mesh small --start-on tiny")
         sp.add_argument("--steady-tolerance",
                         help='relative tolerance of the steady-torque stop, e.g. 0.02 or "2 %%" (default 0.02); '

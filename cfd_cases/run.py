@@ -374,8 +374,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     initial = None
     if not point.flooded:
         run_utility(tmp, "setFields")
-        if point.initial_from is not None:
-            initial = _map_initial_state(tmp, point, log)
+    if point.initial_from is not None:
+        initial = _map_initial_state(tmp, point, log)
     if point.n_procs > 1:
         run_utility(tmp, "decomposePar", "-force")
     meta = {"point": _point_json(point), "template": template, "kinematics": kin, "initial_state": initial,
@@ -397,9 +397,16 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     return case_dir
 
 
-#: Point settings that may differ between a run and the run it starts from.
-_MAPPABLE_SETTINGS = ("mesh", "n_procs", "max_courant", "max_interface_courant", "initial_from",
-                      "force_sample_steps")
+#: Point settings that may differ between a run and the run it starts from: the mesh (its level
+#: and the cells across each contact gap; the geometry stays the same) and how the run is made.
+_MAPPABLE_SETTINGS = ("mesh", "cells_across_gap", "n_procs", "max_courant", "max_interface_courant",
+                      "initial_from", "force_sample_steps")
+
+
+def _mapped_fields(flooded: bool) -> tuple[str, ...]:
+    """The fields a start from another run maps: the flooded (single-phase, simpleFoam) case's
+    velocity and pressure, the oil bath's velocity, oil fraction and pressure."""
+    return ("U", "p") if flooded else ("U", "alpha.oil", "p_rgh")
 
 
 def time_from_rest_at_start_s(meta: dict[str, Any]) -> float:
@@ -409,13 +416,14 @@ def time_from_rest_at_start_s(meta: dict[str, Any]) -> float:
     return float(init.get("time_from_rest_s", init.get("source_time_s", 0.0)))
 
 
-def mapping_source_time(src: Path) -> tuple[str, str]:
+def mapping_source_time(src: Path, fields: tuple[str, ...] = ("U", "alpha.oil")) -> tuple[str, str]:
     """The time folder of case ``src`` that a run started from it maps, and why that one: the
     last regular write before its steady stop (``restart_state_time_s`` in its results, see
-    :func:`_restart_state`), else its latest reconstructed time with U and alpha.oil."""
-    times = [d for d in time_dirs(src) if (d / "U").is_file() and (d / "alpha.oil").is_file() and float(d.name) > 0]
+    :func:`_restart_state`), else its latest reconstructed time with all of ``fields`` (an oil
+    bath: U and alpha.oil; a flooded case: U and p, its time being the iteration)."""
+    times = [d for d in time_dirs(src) if all((d / f).is_file() for f in fields) and float(d.name) > 0]
     if not times:
-        raise FoamError(f"initial_from = {src}: no reconstructed time with U and alpha.oil after 0 "
+        raise FoamError(f"initial_from = {src}: no reconstructed time with {' and '.join(fields)} after 0 "
                         "(run it first; kegel cfd run reconstructs its last time)")
     source_time, why = times[-1].name, "its latest time"
     done = src / "results.json"
@@ -433,10 +441,15 @@ def mapping_source_time(src: Path) -> tuple[str, str]:
 
 
 def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) -> dict[str, Any]:
-    """Start an oil-bath case from the state of a run of the same point on another mesh: its
-    latest time, or, when it stopped on a steady torque, its last regular write before the stop
-    point (``restart_state_time_s`` in its results; the same on every machine, see
-    :func:`_restart_state`).
+    """Start a case from the state of a run of the same point on another mesh (another level,
+    or other cells across the contact gaps): its latest time, or, when it stopped on a steady
+    torque, its last regular write before the stop point (``restart_state_time_s`` in its
+    results; the same on every machine, see :func:`_restart_state`).
+
+    A flooded case maps the velocity and pressure: a fine mesh of the 0.02 D_w gap (4.6 M cells,
+    about 18 s an iteration on 2 cores) then starts from the coarser run's flow instead of a rigid
+    rotation and has only its gaps' refinement to settle. Its steady test still waits out its
+    own first iterations (``_SteadyMonitor.FLOODED_MIN_ITERATIONS``).
 
     The spin-up of the oil and its transport around the housing take a few tenths of a second
     of simulated time; on a coarse mesh that costs a fraction of the fine mesh's time. The
@@ -455,13 +468,15 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     if differ:
         raise FoamError(f"initial_from = {src}: a run of another point (differs in {', '.join(differ)}); "
                         "expected the same bearing, speed, temperature, oil level and lubricant")
-    source_time, why = mapping_source_time(src)
-    fields = ("U", "alpha.oil", "p_rgh")
+    fields = _mapped_fields(point.flooded)
+    source_time, why = mapping_source_time(src, fields[:2])
     originals = {f: (case / "0" / f).read_text() for f in fields}
-    run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
-    volume = read_field(case / "0" / "V")
-    (case / "0" / "V").unlink()
-    oil_before = float(read_field(case / "0" / "alpha.oil") @ volume)
+    oil_before = None
+    if not point.flooded:  # the oil volume before and after (a flooded case is all oil)
+        run_utility(case, "postProcess", "-func", "writeCellVolumes", "-time", "0", log_name="writeCellVolumes")
+        volume = read_field(case / "0" / "V")
+        (case / "0" / "V").unlink()
+        oil_before = float(read_field(case / "0" / "alpha.oil") @ volume)
     log(f"cfd: mapping the state at t = {source_time} s ({why}) of {src} onto this mesh (mapFieldsPar)")
     run_utility(case, "mapFieldsPar", str(src.resolve()), "-consistent", "-sourceTime", source_time,
                 "-mapMethod", "cellVolumeWeight")
@@ -470,14 +485,21 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
         (case / "0" / f).write_text(originals[f])
         write_field_values(case / "0" / f, mapped[f])
     for extra in ("p", "phi"):
-        (case / "0" / extra).unlink(missing_ok=True)
-    oil_after = float(mapped["alpha.oil"] @ volume)
-    change = oil_after / oil_before - 1.0
-    log(f"cfd: oil volume after mapping {oil_after:.6g} m3, {100 * change:+.3f} % against the level's")
-    return {"case": str(src.resolve()), "source_time_s": float(source_time), "source_state": why,
-            "source_mesh": src_point.get("mesh"),
-            "time_from_rest_s": float(source_time) + time_from_rest_at_start_s(src_meta),
-            "oil_volume_m3": oil_after, "oil_volume_of_the_level_m3": oil_before, "oil_volume_change": change}
+        if extra not in fields:
+            (case / "0" / extra).unlink(missing_ok=True)
+    out = {"case": str(src.resolve()), "source_time_s": float(source_time), "source_state": why,
+           "source_mesh": src_point.get("mesh"), "source_cells_across_gap": src_point.get("cells_across_gap")}
+    if point.flooded:  # its time is the SIMPLE iteration
+        out["iterations_before"] = float(source_time) + float((src_meta.get("initial_state") or {}).get(
+            "iterations_before", 0.0))
+    else:
+        out["time_from_rest_s"] = float(source_time) + time_from_rest_at_start_s(src_meta)
+    if oil_before is not None:
+        oil_after = float(mapped["alpha.oil"] @ volume)
+        change = oil_after / oil_before - 1.0
+        log(f"cfd: oil volume after mapping {oil_after:.6g} m3, {100 * change:+.3f} % against the level's")
+        out.update(oil_volume_m3=oil_after, oil_volume_of_the_level_m3=oil_before, oil_volume_change=change)
+    return out
 
 
 def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]],
@@ -863,6 +885,8 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     if not point.flooded:
         fidelity.update(max_courant=point.max_courant, max_interface_courant=point.max_interface_courant,
                         initial_state=meta.get("initial_state"))
+    elif meta.get("initial_state") is not None:
+        fidelity["initial_state"] = meta["initial_state"]
     out = {"provenance": provenance(), "fidelity": fidelity,
            "point": result.point, "kinematics": kin, "runtime_s": result.runtime_s,
            "torques_Nm": result.torques_Nm, "power_loss_W": result.power_loss_W,

@@ -195,7 +195,7 @@ def test_cfd_run_rejects_bad_input():
     assert "--max-courant" in _bad("--max-courant", "-1") and "positive" in _bad("--max-courant", "nan")
     assert "--max-interface-courant" in _bad("--max-interface-courant", "0")
     assert "--initial-from" in _bad("--initial-from", "/nonexistent", level="shaft_center")
-    assert "oil-bath" in _bad("--initial-from", "/nonexistent")  # flooded runs start with the oil turning with the cage
+    assert "kegel CFD case folder" in _bad("--initial-from", "/nonexistent")  # flooded runs map too
     assert "coarser than --mesh tiny" in _bad("--start-on", "small", level="shaft_center")
     assert "coarser than --mesh small" in _bad("--start-on", "fine", "--mesh", "small", level="shaft_center")
     assert "tiny, small, fine" in _bad("--start-on", "huge", "--mesh", "small", level="shaft_center")
@@ -328,6 +328,36 @@ def test_tiny_flooded_case_runs_and_resumes(tmp_path):
     # another point in the same folder is refused
     with pytest.raises(Exception, match="another point"):
         run_case(CfdPoint(**{**p.__dict__, "speed_rad_s": 2 * SPEED}), case, progress=False, log=lambda s: None)
+
+
+@pytest.mark.openfoam
+def test_flooded_sector_starts_from_a_run_with_fewer_cells_across_the_gap(tmp_path):
+    """A fine flooded mesh (more cells across each contact gap) starts from a coarser run's flow:
+    the mapped velocity is the source's (not the start rotation), the walls keep this case's own
+    velocities, and a run of another gap is refused."""
+    from kegel.cfd_cases.foam import FoamError, read_field
+    from kegel.cfd_cases.run import prepare_case
+
+    base = dict(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None, mesh="tiny",
+                sector=True, gap_ratio=0.08)
+    source = tmp_path / "n2"
+    run_case(CfdPoint(**base, n_procs=2, max_iterations=30, cells_across_gap=2), source, progress=False,
+             log=lambda s: None)
+    case = prepare_case(CfdPoint(**base, n_procs=1, cells_across_gap=3, initial_from=str(source)),
+                        tmp_path / "n3", log=lambda s: None)
+    init = json.loads((case / "kegel-case.json").read_text())["initial_state"]
+    assert init["source_time_s"] == 30 and init["iterations_before"] == 30
+    assert init["source_cells_across_gap"] == 2 and "oil_volume_change" not in init
+    u, u_src = read_field(case / "0" / "U"), read_field(source / "30" / "U")
+    assert len(u) > len(u_src)
+    speed, speed_src = np.linalg.norm(u, axis=1), np.linalg.norm(u_src, axis=1)
+    # the source's flow, not the start's rigid rotation with the cage
+    assert np.percentile(speed, 90) == pytest.approx(np.percentile(speed_src, 90), rel=0.05)
+    assert np.ptp(read_field(case / "0" / "p")) > 0
+    assert '#include "wallVelocity/inner_ring"' in (case / "0" / "U").read_text()
+    with pytest.raises(FoamError, match="another point.*gap_ratio"):
+        prepare_case(CfdPoint(**{**base, "gap_ratio": 0.04}, n_procs=1, initial_from=str(source)),
+                     tmp_path / "other", log=lambda s: None)
 
 
 @pytest.mark.openfoam
