@@ -826,9 +826,10 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         "load_residual": None,
         # the means are an answer only where the torques and the cage speed have settled
         # (kegel.dynamics.settling); otherwise the figures are kept and the point says why
-        "converged": bool(res.finished and st["settled"]),
-        **({} if res.finished and st["settled"] else
-           {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s if res.stats.get("extended") else None)}),
+        "converged": bool(res.finished and st["settled"] and st["power_balanced"]),
+        **({} if res.finished and st["settled"] and st["power_balanced"] else
+           {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s if res.stats.get("extended") else None)
+            if not (res.finished and st["settled"]) else _unbalanced(st, dyn.tolerance)}),
         "steady_window_s": [st["window_start_s"], st["window_end_s"]],
         "steady_drift": st["drift_relative"],
         "runtime_s": res.runtime_s,
@@ -837,6 +838,20 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
                     "wall_time_per_revolution_s": res.runtime_s / res.revolutions if res.revolutions else None,
                     "files": files},
     }
+
+
+def _unbalanced(steady: dict[str, Any], tolerance: float) -> str:
+    """The failure text of a settled dynamic point whose power does not balance (see
+    :data:`kegel.dynamics.POWER_BALANCE_TOLERANCE`): its figures are kept, but are not an answer."""
+    from ..solutions.dynamics import POWER_BALANCE_TOLERANCE
+
+    return (f"the dynamic run's power does not balance: input {steady['power_input_W']:.6g} W, dissipated "
+            f"{steady['power_dissipated_W']:.6g} W, kinetic-energy rate {steady['kinetic_energy_rate_W']:.3g} W over "
+            f"{steady['window_start_s'] * 1e3:.4g}-{steady['window_end_s'] * 1e3:.4g} ms: off by "
+            f"{100 * steady['power_balance_error']:+.3g} % of the input, more than "
+            f"{100 * POWER_BALANCE_TOLERANCE:.2g} %. The balance is an identity of the equations of motion, so the "
+            f"integration is not accurate enough (tighten dynamic.tolerance, now {tolerance:.3g}) or the model has "
+            "a defect; the figures are kept, but are not an answer")
 
 
 def _not_settled(steady: dict[str, Any], duration_s: float, max_duration_s: float | None = None) -> str:

@@ -527,3 +527,27 @@ def test_unknown_integrator_options_are_named(setup):
     with pytest.raises(kegel.KegelInputError, match="integrator_options.no_such_switch"):
         simulate(g, b, m, lub, fr, temperature_K=323.15, speed_profile=[(0, 2000 * RPM)], duration_s=1e-4,
                  axial_N=6000.0, slices=8, output_interval_s=1e-4, integrator_options={"no_such_switch": 1})
+
+
+def test_a_settled_point_whose_power_does_not_balance_is_no_answer(tmp_path, monkeypatch):
+    """The power-balance gate: a settled dynamic point is an answer only where input power =
+    dissipated power + the kinetic-energy rate within POWER_BALANCE_TOLERANCE. With the gate at
+    its value the point converges (its balance is ~1e-5); with the gate tightened below that
+    balance the same run fails, its figures kept, with a message that names the powers."""
+    import kegel.solutions.dynamics as dyn
+    from kegel.scene import load_scene
+
+    path = tmp_path / "dyn.toml"
+    path.write_text(scene_text(model='solution = "dynamic"\ncage = true\n[dynamic]\nduration = "8 ms"\n'
+                                     'output_interval = "0.2 ms"'))
+    good = kegel.run.run_scene(load_scene(path), write=False, progress=False).points[0]
+    assert good["converged"], good.get("failure")
+    err = good["power_balance_error"]
+    assert 0 < abs(err) < dyn.POWER_BALANCE_TOLERANCE
+    monkeypatch.setattr(dyn, "POWER_BALANCE_TOLERANCE", 0.5 * abs(err))
+    bad = kegel.run.run_scene(load_scene(path), write=False, progress=False).points[0]
+    assert not bad["converged"] and bad["power_balance_error"] == pytest.approx(err, rel=1e-9)
+    assert bad["friction_torque_Nm"] == pytest.approx(good["friction_torque_Nm"], rel=1e-12)
+    msg = bad["failure"]
+    assert "power does not balance" in msg and "dynamic.tolerance" in msg
+    assert f"{bad['power_input_W']:.6g} W" in msg and f"{bad['power_dissipated_W']:.6g} W" in msg
