@@ -18,6 +18,7 @@ import io
 import math
 import os
 import sys
+import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -147,7 +148,11 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     study_cfd = read_study_cfd(scene)
     warn_log = WarningLog()
     folder, done = _open_folder(scene, fid, out, force, uncertainty) if write else (None, {})
-    work = folder.staging if folder is not None else out  # written here, moved to out when finished
+    # written here, moved to out when finished; without writing, a dynamic point's own files (its
+    # series, checkpoint, pictures) go to a temporary folder that is removed at the end, never into
+    # the output folder, where they would replace a previous run's
+    scratch = None if folder is not None else tempfile.TemporaryDirectory(prefix="kegel-run-")
+    work = folder.staging if folder is not None else Path(scratch.name)
     try:
         bar = _Progress(len(scene.operating_points), progress)
         points: list[dict[str, Any]] = []
@@ -157,6 +162,8 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
             # order the points finish; the caller keeps the scene's order
             if folder is not None:
                 point = folder.final(point)  # paths into the staging folder: where they will be
+            elif isinstance(point.get("dynamic"), dict):
+                point["dynamic"]["files"] = {}  # in the temporary folder, which is removed
             if scene.study is not None and point.get("solved", True):
                 point["study"] = study_rows(scene, point, study_cfd)
             warns = point_warnings(scene, point, friction)
@@ -243,6 +250,8 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     finally:
         if folder is not None:
             folder.close()
+        if scratch is not None:
+            scratch.cleanup()
 
 
 def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: Path, progress: bool,

@@ -540,8 +540,11 @@ def test_a_settled_point_whose_power_does_not_balance_is_no_answer(tmp_path, mon
     path = tmp_path / "dyn.toml"
     path.write_text(scene_text(model='solution = "dynamic"\ncage = true\n[dynamic]\nduration = "8 ms"\n'
                                      'output_interval = "0.2 ms"'))
+    monkeypatch.chdir(tmp_path)  # the scene's output folder, "out", is relative to the working directory
     good = kegel.run.run_scene(load_scene(path), write=False, progress=False).points[0]
     assert good["converged"], good.get("failure")
+    # write=False writes nothing: the dynamic point's own files went to a removed temporary folder
+    assert not (tmp_path / "out").exists() and good["dynamic"]["files"] == {}
     err = good["power_balance_error"]
     assert 0 < abs(err) < dyn.POWER_BALANCE_TOLERANCE
     monkeypatch.setattr(dyn, "POWER_BALANCE_TOLERANCE", 0.5 * abs(err))
