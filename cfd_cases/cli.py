@@ -195,7 +195,8 @@ def _start_run(point, case: Path, args) -> tuple[Any, dict[str, Any] | None]:
         fine = dataclasses.replace(fine, max_wall_time_s=left)
     summary = {"case": str(start_case.resolve()), "mesh": start, "cells": data["fidelity"]["cells"],
                "steady": data["steady"], "stopped_by": data.get("stopped_by"),
-               "simulated_time_s": data.get("simulated_time_s"), "runtime_s": data["runtime_s"],
+               "simulated_time_s": data.get("simulated_time_s"), "iterations": data.get("iterations"),
+               "runtime_s": data["runtime_s"],
                "wall_time_s": wall, "loss_torque_at_shaft_Nm": data["loss_torque_at_shaft_Nm"]}
     return fine, summary
 

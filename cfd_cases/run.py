@@ -109,7 +109,7 @@ class CfdPoint:
     max_wall_time_s: float | None = None   # stop (and write) when the run takes longer than this
     max_courant: float = 5.0               # oil bath: time step limit (Courant number, oil-filled gaps)
     max_interface_courant: float = 1.0     # oil bath: time step limit at the free surface
-    initial_from: str | None = None        # oil bath: a run of this point (another mesh) to start from
+    initial_from: str | None = None        # a run of this point (another mesh) to start from
     # Oil bath: forces are sampled every this many time steps. Each of the 22 ``forces`` objects
     # evaluates the viscous stress over the whole mesh; sampling every step cost about 1 s of a
     # 2.5 s step on the small mesh. Steps are tens of microseconds, so the histories keep their shape.
@@ -306,7 +306,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     meta_path = case_dir / "kegel-case.json"
     if meta_path.is_file():
         meta = json.loads(meta_path.read_text())
-        differ = _differing_settings(meta.get("point", {}), point, RESUMABLE_SETTINGS)
+        # the start (initial_from) only matters when the case is made: a resumed case goes on from its own
+        differ = _differing_settings(meta.get("point", {}), point, RESUMABLE_SETTINGS + ("initial_from",))
         if differ:
             raise FoamError(f"{case_dir} holds a case of another point ({meta_path}: differs in "
                             f"{', '.join(differ)}); choose another folder")
@@ -315,7 +316,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         if end is not None:
             set_controldict_value(case_dir, "endTime", f"{end:.10g}")
         set_controldict_value(case_dir, "stopAt", "endTime")
-        meta["point"] = _point_json(point)
+        meta["point"] = {**_point_json(point), "initial_from": meta.get("point", {}).get("initial_from")}
         meta_path.write_text(json.dumps(meta, indent=2))
         return case_dir
     bearing, g, lub = _load(point)
@@ -379,7 +380,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     if point.n_procs > 1:
         run_utility(tmp, "decomposePar", "-force")
     meta = {"point": _point_json(point), "template": template, "kinematics": kin, "initial_state": initial,
-            "initial_oil_rotation_of_cage": start,
+            # the start rotation's share of the cage speed (None: the fields were mapped, initial_state)
+            "initial_oil_rotation_of_cage": start if initial is None else None,
             "mesh": asdict(quality), "mesh_time_s": mesh_s,
             "lubricant": lub.as_dict(),
             "geometry": {"gap_m": cg.gap_m, "clearance_m": cg.clearance_m,
@@ -451,11 +453,12 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     rotation and has only its gaps' refinement to settle. Its steady test still waits out its
     own first iterations (``_SteadyMonitor.FLOODED_MIN_ITERATIONS``).
 
-    The spin-up of the oil and its transport around the housing take a few tenths of a second
-    of simulated time; on a coarse mesh that costs a fraction of the fine mesh's time. The
-    fields are mapped with ``mapFieldsPar -mapMethod cellVolumeWeight`` (conservative where the
-    meshes overlap: the oil volume changes by the difference of the two discretised domains,
-    recorded here); the case keeps its own boundary conditions (exact wall velocities).
+    In an oil bath the spin-up of the oil and its transport around the housing take a few
+    tenths of a second of simulated time; on a coarse mesh that costs a fraction of the fine
+    mesh's time. The fields are mapped with ``mapFieldsPar -mapMethod cellVolumeWeight``
+    (conservative where the meshes overlap: an oil bath's oil volume changes by the difference
+    of the two discretised domains, recorded here); the case keeps its own boundary conditions
+    (exact wall velocities).
     """
     src = Path(point.initial_from)
     meta_path = src / "kegel-case.json"
@@ -869,7 +872,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
     if point.n_procs > 1 and time_dirs(case / "processor0"):
         run_utility(case, "reconstructPar", "-latestTime")
     restart = None
-    if not point.flooded and monitor.window is not None:
+    if monitor.window is not None:  # a steady stop: the state a finer run maps (flooded: an iteration)
         restart = _restart_state(case, point.n_procs, monitor.window[1])
     result = _postprocess(case, point, meta, monitor.window, window)
     result.stopped_by = ("steady torque" if monitor.window is not None else

@@ -160,7 +160,7 @@ class _Payload:
 
     scene: Any
     fidelity: Any
-    work: Path
+    work: Path | None  # None: nothing is written (run_scene(write=False))
     uncertainty: Any
 
 
@@ -271,7 +271,7 @@ def _dask_map(client: Any, fn: Callable[..., Any], arg_lists: Sequence[tuple[Any
         raise
 
 
-def solve_blocks(scene: Any, fid: Any, blocks: Sequence[Sequence[int]], work: Path, uncertainty: Any, *,
+def solve_blocks(scene: Any, fid: Any, blocks: Sequence[Sequence[int]], work: Path | None, uncertainty: Any, *,
                  jobs: int = 1, client: Any = None) -> Iterator[tuple[int, dict[str, Any]]]:
     """Solve the chains ``blocks`` of ``scene`` in ``jobs`` local processes or on the Dask
     ``client``'s cluster; yield (point index, record) as each chain finishes (any order: the
@@ -287,7 +287,7 @@ def solve_blocks(scene: Any, fid: Any, blocks: Sequence[Sequence[int]], work: Pa
     if fid.solution == "dynamic" and not dyn.threads:
         threads = 1 if client is not None else max(1, default_jobs() // max(1, jobs))
         scene = dataclasses.replace(scene, dynamic=dataclasses.replace(dyn, threads=threads))
-    payload = _Payload(scene=scene, fidelity=fid, work=Path(os.path.abspath(work)), uncertainty=uncertainty)
+    payload = _Payload(scene=scene, fidelity=fid, work=None if work is None else Path(os.path.abspath(work)), uncertainty=uncertainty)
     if client is not None:
         shared = client.scatter(payload, hash=False)
         cores = scene.dynamic.threads if fid.solution == "dynamic" else 1

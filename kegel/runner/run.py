@@ -148,11 +148,10 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     study_cfd = read_study_cfd(scene)
     warn_log = WarningLog()
     folder, done = _open_folder(scene, fid, out, force, uncertainty) if write else (None, {})
-    # written here, moved to out when finished; without writing, a dynamic point's own files (its
-    # series, checkpoint, pictures) go to a temporary folder that is removed at the end, never into
-    # the output folder, where they would replace a previous run's
-    scratch = None if folder is not None else tempfile.TemporaryDirectory(prefix="kegel-run-")
-    work = folder.staging if folder is not None else Path(scratch.name)
+    # written here, moved to out when finished; without writing (None), a dynamic point's own files
+    # (its series, checkpoint, pictures) go to a temporary folder of its own, in the process that
+    # solves it, removed when the point is done: never into the output folder, over a previous run's
+    work = folder.staging if folder is not None else None
     try:
         bar = _Progress(len(scene.operating_points), progress)
         points: list[dict[str, Any]] = []
@@ -162,8 +161,6 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
             # order the points finish; the caller keeps the scene's order
             if folder is not None:
                 point = folder.final(point)  # paths into the staging folder: where they will be
-            elif isinstance(point.get("dynamic"), dict):
-                point["dynamic"]["files"] = {}  # in the temporary folder, which is removed
             if scene.study is not None and point.get("solved", True):
                 point["study"] = study_rows(scene, point, study_cfd)
             warns = point_warnings(scene, point, friction)
@@ -250,11 +247,9 @@ def _run_scene(scene: Scene, output_dir: str | Path | None, *, progress: bool,
     finally:
         if folder is not None:
             folder.close()
-        if scratch is not None:
-            scratch.cleanup()
 
 
-def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: Path, progress: bool,
+def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: Path | None, progress: bool,
                  cfd_runs, uncertainty: "UncertaintyOptions | None",
                  study_cfd: list[tuple[Path, dict[str, Any]]] | None = None):
     """One operating point's record (a failed record when its solver raised) and the state to
@@ -269,7 +264,11 @@ def _solve_point(scene: Scene, fid: Fidelity, op, friction, model, data, work: P
         if cfd is not None:
             # the contact model owns the oil within the CFD's gap g: its rolling force is cut there
             op_friction = dataclasses.replace(op_friction, contact_film_limit_m=cfd[2].contact_film_limit_m)
-        if fid.solution == "dynamic":
+        if fid.solution == "dynamic" and work is None:  # nothing is written: files in a removed folder
+            with tempfile.TemporaryDirectory(prefix="kegel-point-") as tmp:
+                point = _dynamic_point(scene, op, op_friction, Path(tmp), progress, cfd_runs, cfd)
+            point["dynamic"]["files"] = {}
+        elif fid.solution == "dynamic":
             point = _dynamic_point(scene, op, op_friction, work, progress, cfd_runs, cfd)
         else:
             point, data = _quasi_static_record(scene, fid, op, op_friction, model, data, cfd)
@@ -377,6 +376,13 @@ def _check_record(scene: Scene, p: dict[str, Any], staging: Path | None = None) 
         for k in ("outer_ring_torque_Nm", "outer_ring_torque_std_Nm"):
             if not finite(p.get(k)):
                 return k, p.get(k, None), "a finite number (every solved dynamic point has it)"
+        from ..solutions.dynamics import POWER_BALANCE_TOLERANCE
+
+        err = p.get("power_balance_error")
+        if p["converged"] and not (finite(err) and abs(err) <= POWER_BALANCE_TOLERANCE):
+            # a record of a kegel before the power-balance gate: solve the point again
+            return "power_balance_error", err, (f"within +-{POWER_BALANCE_TOLERANCE:g} for a converged dynamic "
+                                                "point (kegel.dynamics.POWER_BALANCE_TOLERANCE)")
         if staging is not None and not (staging / "dynamic" / f"point_{idx:03d}" / "dynamic.json").is_file():
             return "dynamic.files", d["files"].get("json"), (f"the point's files in {staging / 'dynamic'} "
                                                              f"(point_{idx:03d}/dynamic.json is missing)")
