@@ -128,7 +128,19 @@ def continue_from_rest(speed_rpm: float, gap: float, cells: int, max_iterations:
         shutil.copytree(GAP_CASES / name, case, symlinks=True)
     n_procs = json.loads((case / "kegel-case.json").read_text())["point"]["n_procs"]
     run_case(_point(speed_rpm, gap, cells, n_procs, max_iterations), case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
+    _store_run_on(name, json.loads((case / "results.json").read_text()))
     return case / "results.json"
+
+
+def _store_run_on(name: str, data: dict) -> Path:
+    """The summary of a from-rest run run on (its case folder is outside git), beside the point's
+    stored results: the report reads it when the folder is gone."""
+    from kegel.io import atomic_write_json
+
+    dest = STORE / name / "start_rest_run_on.json"
+    dest.parent.mkdir(parents=True, exist_ok=True)
+    atomic_write_json(dest, {"case": f"{name}_start_rest", "summary": _summary(data)})
+    return dest
 
 
 def _summary(data: dict) -> dict:
@@ -148,7 +160,9 @@ def report() -> list[dict]:
         old_f = FROM_REST / f.parent.name / "results.json"
         old = _summary(json.loads(old_f.read_text())) if old_f.is_file() else None
         on_f = CASES / f"{f.parent.name}_start_rest" / "results.json"
-        on = _summary(json.loads(on_f.read_text())) if on_f.is_file() else None
+        kept = f.parent / "start_rest_run_on.json"
+        on = (_summary(json.loads(on_f.read_text())) if on_f.is_file() else
+              json.loads(kept.read_text())["summary"] if kept.is_file() else None)
         rows.append({"case": f.parent.name, "start_cage": new, "start_rest": old, "start_rest_run_on": on})
     print("| case | from rest: iterations, loss | with the cage: iterations (stopped by), loss | loss change | "
           "cage torque change | balance (rest / cage) |")
