@@ -163,8 +163,10 @@ def report() -> list[dict]:
         kept = f.parent / "start_rest_run_on.json"
         on = (_summary(json.loads(on_f.read_text())) if on_f.is_file() else
               json.loads(kept.read_text())["summary"] if kept.is_file() else None)
-        rows.append({"case": f.parent.name, "start_cage": new, "start_rest": old, "start_rest_run_on": on})
-    print("| case | from rest: iterations, loss | with the cage: iterations (stopped by), loss | loss change | "
+        mapped = "_from_n" in f.parent.name  # started from another run's flow (--map-from), not with the cage
+        rows.append({"case": f.parent.name, "start": "mapped" if mapped else "cage",
+                     "start_cage": new, "start_rest": old, "start_rest_run_on": on})
+    print("| case | from rest: iterations, loss | with the cage (or mapped: _from_nN): iterations (stopped by), loss | loss change | "
           "cage torque change | balance (rest / cage) |")
     print("| --- | --- | --- | --- | --- | --- |")
     for r in rows:
