@@ -480,7 +480,8 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
         volume = read_field(case / "0" / "V")
         (case / "0" / "V").unlink()
         oil_before = float(read_field(case / "0" / "alpha.oil") @ volume)
-    log(f"cfd: mapping the state at t = {source_time} s ({why}) of {src} onto this mesh (mapFieldsPar)")
+    at = f"iteration {source_time}" if point.flooded else f"t = {source_time} s"
+    log(f"cfd: mapping the state at {at} ({why}) of {src} onto this mesh (mapFieldsPar)")
     run_utility(case, "mapFieldsPar", str(src.resolve()), "-consistent", "-sourceTime", source_time,
                 "-mapMethod", "cellVolumeWeight")
     mapped = {f: read_field(case / "0" / f) for f in fields}
