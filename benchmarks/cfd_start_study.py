@@ -81,6 +81,11 @@ def _suffix(map_from: int | None) -> str:
     return "_start_cage" if map_from is None else f"_from_n{map_from}"
 
 
+def _stored_as(name: str, map_from: int | None) -> str:
+    """The folder in ``STORE`` of a case: the gap-study case name, with the suffix for a mapped start."""
+    return name if map_from is None else f"{name}{_suffix(map_from)}"
+
+
 def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterations: int,
               map_from: int | None = None) -> Path:
     """Run (or resume) one case from the runner's start, or from the flow of the same gap with
@@ -92,8 +97,7 @@ def run_point(speed_rpm: float, gap: float, cells: int, n_procs: int, max_iterat
     p = _point(speed_rpm, gap, cells, n_procs, max_iterations, source)
     case = CASES / f"{name}{_suffix(map_from)}"
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
-    stored = name if map_from is None else f"{name}{_suffix(map_from)}"
-    dest = STORE / stored
+    dest = STORE / _stored_as(name, map_from)
     dest.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(case / "results.json", dest / "results.json")
     store_windows(speed_rpm, gap, cells, map_from)
@@ -110,7 +114,7 @@ def store_windows(speed_rpm: float, gap: float, cells: int, map_from: int | None
     name = case_name(gap, cells, "tiny", True, speed_rpm)
     case = f"{name}{_suffix(map_from)}"
     rows = window_table(wall_histories(CASES / case))
-    dest = STORE / (name if map_from is None else case)
+    dest = STORE / _stored_as(name, map_from)
     dest.mkdir(parents=True, exist_ok=True)
     atomic_write_json(dest / "windows.json", {"case": case, "window_iterations": 100, "rows": rows})
     return dest / "windows.json"

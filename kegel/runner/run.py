@@ -27,12 +27,13 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from ..correlations import hydraulic_torques
+from ..solutions import dynamics as _dynamics  # its POWER_BALANCE_TOLERANCE read at use
 from ..solutions.dynamics import CONTACTS, MECHANISMS
 from ..base.io import Terminated, atomic_write_json, atomic_write_json_records, atomic_write_text, provenance, signals_interrupt
 from ..model.lubricant import lubricant_state
 from .parallel import effective_jobs, point_blocks, solve_blocks
 from ..base.errors import KegelInputError, KegelSolverError
-from ..solutions.dynamics import SimulationDiverged
+from ..solutions.dynamics import SimulationDiverged, power_balanced
 from ..outputs.point_warnings import Warning_, WarningLog, point_warnings
 from ..solutions.quasi_static import bearing_friction, bearing_model, load_distribution
 from ..outputs.study import STUDY_FILES, read_study_cfd, study_csv, study_plot, study_rows
@@ -376,12 +377,10 @@ def _check_record(scene: Scene, p: dict[str, Any], staging: Path | None = None) 
         for k in ("outer_ring_torque_Nm", "outer_ring_torque_std_Nm"):
             if not finite(p.get(k)):
                 return k, p.get(k, None), "a finite number (every solved dynamic point has it)"
-        from ..solutions.dynamics import POWER_BALANCE_TOLERANCE
-
         err = p.get("power_balance_error")
-        if p["converged"] and not (finite(err) and abs(err) <= POWER_BALANCE_TOLERANCE):
+        if p["converged"] and not (finite(err) and power_balanced(err)):
             # a record of a kegel before the power-balance gate: solve the point again
-            return "power_balance_error", err, (f"within +-{POWER_BALANCE_TOLERANCE:g} for a converged dynamic "
+            return "power_balance_error", err, (f"within +-{_dynamics.POWER_BALANCE_TOLERANCE:g} for a converged dynamic "
                                                 "point (kegel.dynamics.POWER_BALANCE_TOLERANCE)")
         if staging is not None and not (staging / "dynamic" / f"point_{idx:03d}" / "dynamic.json").is_file():
             return "dynamic.files", d["files"].get("json"), (f"the point's files in {staging / 'dynamic'} "
@@ -815,6 +814,9 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
             "dynamic": dyn.as_dict(), "rib_model": rib_note,
             "flow_forces": law.as_dict() if law else None}
     files = write_result(res, pdir, meta, g=g, vtk_every=max(1, len(res.time_s) // 100))
+    failure = (_not_settled(st, dyn.duration_s, dyn.max_duration_s if res.stats.get("extended") else None)
+               if not (res.finished and st["settled"]) else
+               None if st["power_balanced"] else _unbalanced(st, dyn.tolerance))
     return {
         **op.as_dict(),
         "friction_torque_Nm": friction,
@@ -841,10 +843,8 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
         "load_residual": None,
         # the means are an answer only where the torques and the cage speed have settled
         # (kegel.dynamics.settling); otherwise the figures are kept and the point says why
-        "converged": bool(res.finished and st["settled"] and st["power_balanced"]),
-        **({} if res.finished and st["settled"] and st["power_balanced"] else
-           {"failure": _not_settled(st, dyn.duration_s, dyn.max_duration_s if res.stats.get("extended") else None)
-            if not (res.finished and st["settled"]) else _unbalanced(st, dyn.tolerance)}),
+        "converged": failure is None,
+        **({} if failure is None else {"failure": failure}),
         "steady_window_s": [st["window_start_s"], st["window_end_s"]],
         "steady_drift": st["drift_relative"],
         "runtime_s": res.runtime_s,
@@ -858,13 +858,11 @@ def _dynamic_point(scene: Scene, op, friction, out: Path, progress: bool,
 def _unbalanced(steady: dict[str, Any], tolerance: float) -> str:
     """The failure text of a settled dynamic point whose power does not balance (see
     :data:`kegel.dynamics.POWER_BALANCE_TOLERANCE`): its figures are kept, but are not an answer."""
-    from ..solutions.dynamics import POWER_BALANCE_TOLERANCE
-
     return (f"the dynamic run's power does not balance: input {steady['power_input_W']:.6g} W, dissipated "
             f"{steady['power_dissipated_W']:.6g} W, kinetic-energy rate {steady['kinetic_energy_rate_W']:.3g} W over "
             f"{steady['window_start_s'] * 1e3:.4g}-{steady['window_end_s'] * 1e3:.4g} ms: off by "
             f"{100 * steady['power_balance_error']:+.3g} % of the input, more than "
-            f"{100 * POWER_BALANCE_TOLERANCE:.2g} %. The balance is an identity of the equations of motion, so the "
+            f"{100 * _dynamics.POWER_BALANCE_TOLERANCE:.2g} %. The balance is an identity of the equations of motion, so the "
             f"integration is not accurate enough (tighten dynamic.tolerance, now {tolerance:.3g}) or the model has "
             "a defect; the figures are kept, but are not an answer")
 

@@ -45,6 +45,7 @@ __all__ = [
     "ATOL_VELOCITY_M_S",
     "DAMPING_TIME_S",
     "POWER_BALANCE_TOLERANCE",
+    "power_balanced",
     "STEADY_HOLD_PASSES",
     "STEADY_SIGNALS",
     "STEADY_TOLERANCE",
@@ -89,6 +90,12 @@ STEADY_TREND_PASSES = 4.0
 #: skidding, -41 % at 50 N): a gate at this level would have caught it. A point outside it is not
 #: an answer (kegel.runner: ``converged`` false, with the figures).
 POWER_BALANCE_TOLERANCE = 1e-3
+
+
+def power_balanced(error: float) -> bool:
+    """Whether a relative power-balance error passes the gate (:data:`POWER_BALANCE_TOLERANCE`;
+    NaN, from no input power, does not)."""
+    return bool(math.isfinite(error) and abs(error) <= POWER_BALANCE_TOLERANCE)
 
 #: Absolute tolerance of the velocities in the integrator's error test (m/s; the angular rates get
 #: it over the roller radius, the positions 1e-3 of it per rad/s of the start speed + 1 pm).
@@ -689,8 +696,7 @@ def simulate(g: BearingGeometry, bearing: BearingData, material: MaterialData, l
         if not finished:
             info["reason"] = "the run stopped before its end: " + (message or "the integration failed")
         steady["settled"] = ok
-        err = steady["power_balance_error"]
-        steady["power_balanced"] = bool(math.isfinite(err) and abs(err) <= POWER_BALANCE_TOLERANCE)
+        steady["power_balanced"] = power_balanced(steady["power_balance_error"])
         steady["drift_relative"] = info["drift_relative"]
         steady["settling"] = info
     res = DynamicResult(time_s=t, series=series, steady=steady, stats=stats, states=np.asarray(states), quadratures=Q,
