@@ -43,6 +43,8 @@ __all__ = [
     "write_field_values",
     "rotation_matrix",
     "time_dirs",
+    "cut_write",
+    "set_aside_cut_writes",
     "controldict_value",
     "set_controldict_value",
 ]
@@ -458,6 +460,80 @@ def time_dirs(case: str | Path) -> list[Path]:
         except ValueError:
             continue
     return sorted(out, key=lambda p: float(p.name))
+
+
+# the line OpenFOAM ends every file it writes with (regIOobject::writeEndDivider)
+_END_DIVIDER = "// " + "*" * 73 + " //"
+
+
+def _cut_file(path: Path) -> bool:
+    """Whether OpenFOAM's file ``path`` was cut while being written: it does not end with the
+    divider OpenFOAM writes last (compressed files are not checked)."""
+    if path.suffix == ".gz":
+        return False
+    with path.open("rb") as f:
+        f.seek(0, os.SEEK_END)
+        f.seek(max(0, f.tell() - 200))
+        tail = f.read().decode("ascii", "replace").rstrip()
+    return not tail.endswith(_END_DIVIDER)
+
+
+def cut_write(time_dir: Path, fields: Sequence[str]) -> str | None:
+    """Why the time folder ``time_dir`` cannot be restarted from (a field of ``fields``
+    missing, or a file that does not end as OpenFOAM ends what it writes: the solver was
+    killed while writing it), or None when it is whole."""
+    missing = [f for f in fields if not (time_dir / f).is_file() and not (time_dir / f"{f}.gz").is_file()]
+    if missing:
+        return f"{time_dir} lacks {', '.join(missing)}"
+    for f in sorted(time_dir.rglob("*")):
+        if f.is_file() and _cut_file(f):
+            return f"{f} is cut short (it does not end with OpenFOAM's closing line)"
+    return None
+
+
+def _fields_of(folder: Path) -> list[str]:
+    """The fields a restart of ``folder`` (a case or processor folder) needs: those of its ``0``."""
+    zero = folder / "0"
+    return sorted(f.name for f in zero.iterdir() if f.is_file()) if zero.is_dir() else []
+
+
+def set_aside_cut_writes(case: str | Path, log: Callable[[str], None] = print) -> list[Path]:
+    """Before a resumed run: move every time folder that cannot be restarted from aside as
+    ``<time>.cut`` (``<time>.cut-2``, ...), so that the solver's latest time, reconstructPar
+    and kegel all go on from the last whole write. Nothing is deleted.
+
+    A time is set aside in every processor folder and in the case when any processor folder
+    lacks it or holds it cut (a file that does not end as OpenFOAM ends what it writes, or a
+    field of the folder's ``0`` missing: the solver was killed while writing); a reconstructed
+    time of the case that is cut (reconstructPar killed) is set aside in the case only, and
+    reconstructed again. Returns the folders moved."""
+    case = Path(case)
+    procs = sorted(p for p in case.glob("processor[0-9]*") if p.is_dir())
+    bad: dict[str, tuple[str, list[Path]]] = {}
+    names = sorted({t.name for r in procs for t in time_dirs(r)}, key=float)
+    for name in names:
+        lacking = [r.name for r in procs if not (r / name).is_dir()]
+        why = (f"{', '.join(lacking)} lack{'s' if len(lacking) == 1 else ''} it" if lacking else
+               next((w for r in procs if (w := cut_write(r / name, _fields_of(r))) is not None), None))
+        if why is not None:
+            bad[name] = (why, [r / name for r in procs if (r / name).is_dir()] +
+                         ([case / name] if (case / name).is_dir() else []))
+    fields = _fields_of(case)
+    for t in time_dirs(case):
+        if t.name not in bad and (why := cut_write(t, fields)) is not None:
+            bad[t.name] = (why, [t])
+    moved = []
+    for name, (why, folders) in sorted(bad.items(), key=lambda kv: float(kv[0])):
+        for src in folders:
+            dst, k = src.with_name(f"{name}.cut"), 1
+            while dst.exists():
+                k += 1
+                dst = src.with_name(f"{name}.cut-{k}")
+            src.rename(dst)
+            moved.append(dst)
+        log(f"cfd: the write of time {name} cannot be restarted from ({why}); set aside as "
+            f"{name}.cut, the run goes on from the last whole write")
+    return moved
 
 
 def controldict_value(case: str | Path, key: str) -> str:

@@ -41,8 +41,12 @@ class ForceSeries:
 
 
 def _read_dat(path: Path) -> np.ndarray:
+    text = path.read_text()
+    lines = text.splitlines()
+    if lines and not text.endswith("\n"):
+        lines.pop()  # a last line without its end: cut by a kill (a resumed run writes it anew)
     rows = []
-    for line in path.read_text().splitlines():
+    for line in lines:
         if not line.strip() or line.lstrip().startswith("#"):
             continue
         nums = line.replace("(", " ").replace(")", " ").split()
@@ -50,12 +54,12 @@ def _read_dat(path: Path) -> np.ndarray:
             rows.append([float(x) for x in nums])
         except ValueError as exc:
             raise FoamError(f"{path}: unreadable line {line!r}") from exc
+        if len(rows[-1]) != 10:
+            raise FoamError(f"{path}: expected 10 columns (time, total, pressure, viscous), got "
+                            f"{len(rows[-1])} in line {line!r}")
     if not rows:
         return np.empty((0, 10))
-    arr = np.array(rows)
-    if arr.shape[1] != 10:
-        raise FoamError(f"{path}: expected 10 columns (time, total, pressure, viscous), got {arr.shape[1]}")
-    return arr
+    return np.array(rows)
 
 
 def _series(case: Path, name: str, file: str) -> np.ndarray:

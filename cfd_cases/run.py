@@ -46,7 +46,8 @@ from typing import Any, TextIO
 import numpy as np
 
 from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
-                   run_utility, set_controldict_value, time_dirs, write_field_values)
+                   run_utility, set_aside_cut_writes, set_controldict_value, time_dirs,
+                   write_field_values)
 from .forces import ForceSeries, read_forces
 from .geometry import (CELLS_ACROSS_GAP, CELLS_ACROSS_GAP_RANGE, CLEARANCE_RATIO, GAP_RATIO, MESH_LEVELS, RATIO_RANGES,
                        CfdGeometry, build_mesh,
@@ -312,6 +313,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
             raise FoamError(f"{case_dir} holds a case of another point ({meta_path}: differs in "
                             f"{', '.join(differ)}); choose another folder")
         log(f"cfd: resuming the case in {case_dir} from its latest time")
+        set_aside_cut_writes(case_dir, log=log)  # a write cut by a kill: go on from the one before
         end = point.max_iterations if point.flooded else point.end_time_s
         if end is not None:
             set_controldict_value(case_dir, "endTime", f"{end:.10g}")

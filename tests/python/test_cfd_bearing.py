@@ -304,10 +304,13 @@ def test_oil_bath_write_times_do_not_follow_the_end_time():
 
 @pytest.mark.openfoam
 def test_tiny_flooded_case_runs_and_resumes(tmp_path):
-    """Both ways of stopping: an iteration limit, then a resumed run that goes on from there."""
+    """Both ways of stopping: an iteration limit, then a resumed run that goes on from there; and
+    a resume after a kill that cut the latest write (one processor's field half written, the
+    force file's last line cut) goes on from the write before it, to the same answer as a resume
+    of the whole case, and keeps the cut write (moved aside, not deleted)."""
     case = tmp_path / "flooded"
     p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=None,
-                 mesh="tiny", n_procs=2, max_iterations=40)
+                 mesh="tiny", n_procs=2, max_iterations=20)
     res = run_case(p, case, progress=False, log=lambda s: None)
     data = json.loads((case / "results.json").read_text())
     t = data["torques_Nm"]
@@ -318,16 +321,35 @@ def test_tiny_flooded_case_runs_and_resumes(tmp_path):
     assert data["provenance"]["kegel_version"] and data["fidelity"]["mesh"] == "tiny"
     assert data["fidelity"]["steady_tolerance"] == 0.02
     assert len(data["rollers"]) == 17 and _finite([r["force_N"] for r in data["rollers"]])
-    assert data["iterations"] == pytest.approx(40)
-    # resume with more iterations: continues from iteration 40
-    p2 = CfdPoint(**{**p.__dict__, "max_iterations": 60})
+    assert data["iterations"] == pytest.approx(20)
+    # resume with more iterations: continues from iteration 20 (and writes iteration 40)
+    p2 = CfdPoint(**{**p.__dict__, "max_iterations": 40})
     run_case(p2, case, progress=False, log=lambda s: None)
     data2 = json.loads((case / "results.json").read_text())
-    assert data2["iterations"] == pytest.approx(60)
+    assert data2["iterations"] == pytest.approx(40)
     assert data2["runtime_s"] > data["runtime_s"]
     # another point in the same folder is refused
     with pytest.raises(Exception, match="another point"):
         run_case(CfdPoint(**{**p.__dict__, "speed_rad_s": 2 * SPEED}), case, progress=False, log=lambda s: None)
+    # a kill while writing iteration 40: processor1's U half written, a force line cut
+    killed = tmp_path / "killed"
+    shutil.copytree(case, killed, symlinks=True)
+    u = killed / "processor1" / "40" / "U"
+    u.write_bytes(u.read_bytes()[: u.stat().st_size // 2])
+    cut_u = u.read_bytes()
+    forces = sorted((killed / "postProcessing" / "forces_inner_ring").glob("*/force.dat"))[-1]
+    forces.write_bytes(forces.read_bytes()[:-25])
+    said: list[str] = []
+    p3 = CfdPoint(**{**p.__dict__, "max_iterations": 50})
+    whole = run_case(p3, case, progress=False, log=lambda s: None)
+    resumed = run_case(p3, killed, progress=False, log=said.append)
+    assert any("time 40 cannot be restarted" in s and "processor1/40/U" in s for s in said)
+    for proc in ("processor0", "processor1"):
+        assert (killed / proc / "40.cut").is_dir()
+    assert (killed / "processor1" / "40.cut" / "U").read_bytes() == cut_u
+    assert json.loads((killed / "results.json").read_text())["iterations"] == pytest.approx(50)
+    # iterations 21-40 are repeated as they ran the first time: the same flow at 50
+    assert resumed.loss_torque_at_shaft_Nm == pytest.approx(whole.loss_torque_at_shaft_Nm, rel=1e-8)
 
 
 @pytest.mark.openfoam

@@ -464,3 +464,62 @@ def test_an_oscillation_that_averages_out_is_steady_a_creep_is_not(tmp_path, mon
     assert creep(None) is False
     change = re.search(r"change (\S+) x the steady limit", creep.status).group(1)
     assert float(change) > 1.0  # a linear creep: its remaining change is unbounded
+
+
+def _foam_file(path: Path, body: str = "internalField uniform 0;", whole: bool = True) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    text = f"FoamFile {{ object {path.name}; }}\n{body}\n\n\n// {'*' * 73} //\n"
+    path.write_text(text if whole else text[: len(text) // 2])
+
+
+def test_writes_cut_by_a_kill_are_set_aside_and_nothing_is_deleted(tmp_path):
+    """A resumed run goes on from the last whole write: a time cut on one processor (a file
+    without OpenFOAM's closing line), lacking on one, or lacking a field of 0 is moved aside in
+    every processor folder and the case; a reconstructed time cut in the case alone is moved
+    aside there only (reconstructPar makes it again); whole writes stay."""
+    from kegel.cfd_cases.foam import cut_write, set_aside_cut_writes, time_dirs
+
+    case = Path(tmp_path)
+    for root in (case, case / "processor0", case / "processor1"):
+        for f in ("U", "p"):
+            _foam_file(root / "0" / f)
+        for t in ("100", "200", "300", "400"):
+            for f in ("U", "p", "phi", "uniform/time"):
+                _foam_file(root / t / f)
+    _foam_file(case / "processor1" / "200" / "U", whole=False)         # killed while writing U
+    (case / "processor0" / "300" / "p").unlink()                         # killed before p
+    _foam_file(case / "400" / "p", whole=False)                          # reconstructPar killed
+    (case / "processor1" / "500" / "U").parent.mkdir()                   # processor1 never reached 500
+    for f in ("U", "p"):
+        _foam_file(case / "processor0" / "500" / f)
+    _foam_file(case / "processor0" / "200.cut" / "U")                    # an earlier kill's folder
+    kept = (case / "processor1" / "200" / "U").read_bytes()
+    said: list[str] = []
+    moved = set_aside_cut_writes(case, log=said.append)
+    assert [t.name for t in time_dirs(case / "processor0")] == ["100", "400"]
+    assert [t.name for t in time_dirs(case / "processor1")] == ["100", "400"]
+    assert [t.name for t in time_dirs(case)] == ["100"]
+    assert (case / "processor1" / "200.cut" / "U").read_bytes() == kept  # moved, not deleted
+    assert {p.relative_to(case).as_posix() for p in moved} == {
+        "processor0/200.cut-2", "processor1/200.cut", "200.cut", "processor0/300.cut",
+        "processor1/300.cut", "300.cut", "processor0/500.cut", "processor1/500.cut", "400.cut"}
+    assert len(said) == 4 and "processor1/200/U is cut short" in said[0] and "lacks p" in said[1]
+    assert cut_write(case / "processor0" / "100", ["U", "p"]) is None
+    assert set_aside_cut_writes(case, log=said.append) == []  # nothing left to set aside
+
+
+def test_a_force_line_cut_by_a_kill_is_dropped_and_a_bad_whole_line_is_an_error(tmp_path):
+    from kegel.cfd_cases.foam import FoamError
+    from kegel.cfd_cases.forces import read_forces
+
+    root = Path(tmp_path) / "postProcessing" / "forces_x"
+    _write_forces(root / "0", np.arange(1, 11), 1.0)
+    for name in ("force.dat", "moment.dat"):
+        f = root / "0" / name
+        f.write_text(f.read_text() + "11 (1 0 1) (0 0")  # the solver was killed mid-line
+    f = read_forces(tmp_path, "forces_x")
+    assert f.time[-1] == 10 and len(f.time) == 10
+    for name in ("force.dat", "moment.dat"):
+        (root / "0" / name).write_text("# Time total\n1 (1 0 1) (0 0 0) (1 0 1)\n2 (1 0 1) (0 0\n")
+    with pytest.raises(FoamError, match="expected 10 columns"):
+        read_forces(tmp_path, "forces_x")
