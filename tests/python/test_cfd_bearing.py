@@ -348,6 +348,9 @@ def test_tiny_flooded_case_runs_and_resumes(tmp_path):
         assert (killed / proc / "40.cut").is_dir()
     assert (killed / "processor1" / "40.cut" / "U").read_bytes() == cut_u
     assert json.loads((killed / "results.json").read_text())["iterations"] == pytest.approx(50)
+    # the last iteration is written although 50 is off the write interval (20): a resume goes on from it
+    for folder in (case, killed):
+        assert all((folder / proc / "50" / "U").is_file() for proc in ("processor0", "processor1"))
     # iterations 21-40 are repeated as they ran the first time: the same flow at 50
     assert resumed.loss_torque_at_shaft_Nm == pytest.approx(whole.loss_torque_at_shaft_Nm, rel=1e-8)
 
