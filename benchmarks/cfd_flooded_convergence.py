@@ -54,15 +54,19 @@ def wall_histories(case: Path) -> dict[str, np.ndarray]:
 
 def window_table(h: dict[str, np.ndarray], width: float = WINDOW, key: str = "to_iteration") -> list[dict]:
     """Means over consecutive windows of ``width`` (iterations; seconds for a transient run's
-    force times, ``key`` naming the window's end), with the balance."""
+    force times, ``key`` naming the window's end: the run's last sample for a last window the run
+    did not finish, whose row then says ``partial``), with the balance."""
     rows = []
     it = h["iteration"]
-    for a in np.arange(0.0, float(it.max()), width):
+    last = float(it.max())
+    for a in np.arange(0.0, last, width):
         m = (it > a) & (it <= a + width)
         if not m.any():
             continue
-        end = a + width
+        end = min(a + width, last)
         row = {key: int(round(end)) if key == "to_iteration" else round(float(end), 6)}
+        if end < a + width:
+            row["partial"] = True
         for k in ("loss", *WALLS, "rollers_about_axis"):
             row[f"{k}_Nm"] = float(h[k][m].mean())
         total = sum(row[f"{k}_Nm"] for k in (*WALLS, "rollers_about_axis"))
