@@ -73,8 +73,9 @@ def sweep_case(designation: str, axial_N: float) -> list[dict[str, Any]]:
     """Every (speed, temperature) point of one bearing."""
     bearing = kegel.Bearing(designation)
     skf_b = skf_bearing(bearing.data)
+    # minimum quantity, as stored (the API's default became an oil bath at half the roller height)
     res = bearing.friction(speed_rpm=list(SPEEDS_RPM), axial_load_N=axial_N,
-                           temperature_degC=list(TEMPERATURES_DEGC))
+                           temperature_degC=list(TEMPERATURES_DEGC), lubrication="minimum_quantity")
     rows = []
     for p in res.points:
         nu = p["lubricant_state"]["kinematic_viscosity_m2_s"]

@@ -23,7 +23,8 @@ Codes
 ``outside_compared_range``
     The point lies outside the conditions at which kegel's friction torque has been compared with
     anything outside kegel (:data:`COMPARED_RANGE`: the SKF catalogue model at the seed paper's
-    Table 1-3 conditions; no measured torque has been usable so far, see ``kegel validate``).
+    Table 1-3 conditions, which hold the measured Figure 5 torques of the 32216 at 50 degC too;
+    see ``kegel validate``).
 ``parameters_to_verify``
     Friction or lubricant parameters marked ``verify = true`` in their data files (textbook values
     not yet confirmed for this pair) enter the answer.
@@ -193,7 +194,8 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
             outside.append(f"nu n = {v:.3g} mm^2/s rpm (compared: {lo:.3g}-{hi:.3g})")
     if outside:
         out.append(Warning_("outside_compared_range", "outside the conditions kegel's friction torque has been "
-                            "compared at (SKF model, Tables 1-3; no measured torque yet): " + "; ".join(outside)))
+                            "compared at (SKF model at the seed's Tables 1-3; measured: its Figure 5, inside "
+                            "them): " + "; ".join(outside)))
     marked = []
     for name, path in ((getattr(friction, "name", None), getattr(friction, "source_file", None)),
                        (scene.lubricant.name, getattr(scene.lubricant, "source_file", None))):
