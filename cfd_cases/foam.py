@@ -491,10 +491,19 @@ def cut_write(time_dir: Path, fields: Sequence[str]) -> str | None:
     return None
 
 
+#: Files of a ``0`` folder that no restart needs: post-processing output (cell volumes and
+#: centres, written there for a moment) and setFields' originals.
+_NOT_RESTART_FIELDS = frozenset({"V", "C", "Cx", "Cy", "Cz"})
+
+
 def _fields_of(folder: Path) -> list[str]:
-    """The fields a restart of ``folder`` (a case or processor folder) needs: those of its ``0``."""
+    """The fields a restart of ``folder`` (a case or processor folder) needs: those of its ``0``
+    (less post-processing output and ``*.orig`` copies)."""
     zero = folder / "0"
-    return sorted(f.name for f in zero.iterdir() if f.is_file()) if zero.is_dir() else []
+    if not zero.is_dir():
+        return []
+    return sorted(f.name for f in zero.iterdir()
+                  if f.is_file() and f.name not in _NOT_RESTART_FIELDS and not f.name.endswith(".orig"))
 
 
 def set_aside_cut_writes(case: str | Path, log: Callable[[str], None] = print) -> list[Path]:

@@ -493,6 +493,8 @@ def test_writes_cut_by_a_kill_are_set_aside_and_nothing_is_deleted(tmp_path):
     for f in ("U", "p"):
         _foam_file(case / "processor0" / "500" / f)
     _foam_file(case / "processor0" / "200.cut" / "U")                    # an earlier kill's folder
+    _foam_file(case / "0" / "V")                                         # a post-processing leftover
+    _foam_file(case / "0" / "alpha.oil.orig")                            # setFields' original
     kept = (case / "processor1" / "200" / "U").read_bytes()
     said: list[str] = []
     moved = set_aside_cut_writes(case, log=said.append)
