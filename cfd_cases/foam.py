@@ -313,6 +313,7 @@ def run_solver(
     t0 = time.monotonic()
     last_step = (t0, 0.0)
     first_step: tuple[float, float] | None = None
+    slowest_step_s = 0.0
     reason: str | None = None
     fatal_at: int | None = None
     stopped = False
@@ -344,8 +345,10 @@ def run_solver(
                     break
                 if state.steps != step_before and first_step is None:
                     first_step = (time.monotonic(), state.time)  # a resumed run starts at its latest time
+                    last_step = first_step
                 elif state.steps != step_before:
                     now = time.monotonic()
+                    slowest_step_s = max(slowest_step_s, now - last_step[0])
                     eta = math.nan
                     if end_time is not None and state.time > last_step[1]:
                         rate = (state.time - first_step[1]) / max(now - first_step[0], 1e-9)
@@ -367,7 +370,8 @@ def run_solver(
                     break
         except KeyboardInterrupt:
             # The solver runs in its own session and does not see the terminal's Ctrl-C.
-            interrupted = _stop_on_interrupt(proc, case, log)
+            interrupted = _stop_on_interrupt(proc, case, log,
+                                             grace_s=max(STOP_GRACE_S, STOP_GRACE_STEPS * slowest_step_s))
         finally:
             if reason is not None or interrupted not in (None, "written"):
                 _kill(proc)
@@ -375,7 +379,8 @@ def run_solver(
     wall = time.monotonic() - t0
     if interrupted is not None:
         how = ("it wrote its state at the time above" if interrupted == "written"
-               else f"it was killed ({interrupted}); its latest written time stands")
+               else f"it was killed ({interrupted}); its latest write may be cut short, and a resumed run "
+                    "then goes on from the one before")
         raise FoamInterrupted(
             f"{application} interrupted at t = {state.time:g} s (step {state.steps}): {how}; "
             "the same command resumes the run", case, application, log_path, _excerpt(tail, 10))
@@ -417,7 +422,14 @@ def _sigterm_as_interrupt() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-def _stop_on_interrupt(proc: subprocess.Popen, case: Path, log, grace_s: float = 60.0) -> str:
+#: After Ctrl-C (or SIGTERM) a solver gets this long to write its state and stop before it is
+#: killed, or STOP_GRACE_STEPS times its slowest time step so far when that is longer: a 4.6 M-cell
+#: sector took 50 s a step and was killed while writing after 60 s, its latest write cut short.
+STOP_GRACE_S = 60.0
+STOP_GRACE_STEPS = 3.0
+
+
+def _stop_on_interrupt(proc: subprocess.Popen, case: Path, log, grace_s: float = STOP_GRACE_S) -> str:
     """Ctrl-C during a run: ask the solver to write its state and stop (``stopAt writeNow``),
     reading its output meanwhile (a full pipe would block it). Returns ``"written"`` when it
     stopped by itself, else why it has to be killed (no stop within ``grace_s``, a second Ctrl-C)."""

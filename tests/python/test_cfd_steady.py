@@ -291,8 +291,7 @@ def test_ctrl_c_stops_the_solver_and_says_how_to_resume(tmp_path, monkeypatch, o
 
     body = _OBEDIENT if obedient else _OBEDIENT.replace("grep -q writeNow", "false")
     case = _stand_in_solver(tmp_path, monkeypatch, body)
-    monkeypatch.setattr(foam, "_stop_on_interrupt",
-                        lambda proc, case, log, grace_s=1.0, f=foam._stop_on_interrupt: f(proc, case, log, grace_s))
+    monkeypatch.setattr(foam, "STOP_GRACE_S", 1.0)
 
     def ctrl_c(st, eta):
         if st.steps >= 3:
@@ -305,6 +304,27 @@ def test_ctrl_c_stops_the_solver_and_says_how_to_resume(tmp_path, monkeypatch, o
     assert "stopAt          writeNow;" in (case / "system" / "controlDict").read_text()
     assert (case / "written").exists() is obedient
     assert ("wrote its state" in str(err.value)) is obedient
+
+
+def test_a_slow_solver_gets_time_to_write_before_it_is_killed(tmp_path, monkeypatch):
+    """The grace after Ctrl-C grows with the solver's slowest step: a solver whose steps take
+    0.6 s and whose write takes 1 s is not killed after a grace of 0.3 s (a 4.6 M-cell sector,
+    50 s a step, was killed while writing after 60 s: its latest write cut short)."""
+    import kegel.cfd_cases.foam as foam
+
+    slow = ("i=0\nwhile true; do\n  i=$((i+1))\n  echo \"Time = $i\"\n"
+            "  if grep -q writeNow \"$2/system/controlDict\"; then sleep 1; touch \"$2/written\"; echo End; exit 0; fi\n"
+            "  sleep 0.6\ndone\n")
+    case = _stand_in_solver(tmp_path, monkeypatch, slow)
+    monkeypatch.setattr(foam, "STOP_GRACE_S", 0.3)
+
+    def ctrl_c(st, eta):
+        if st.steps >= 3:
+            raise KeyboardInterrupt
+
+    with pytest.raises(foam.FoamInterrupted, match="wrote its state"):
+        foam.run_solver(case, "interFoam", n_procs=1, end_time=100.0, progress=ctrl_c)
+    assert (case / "written").exists()
 
 
 def test_sigterm_stops_the_solver_as_ctrl_c_does(tmp_path, monkeypatch):
