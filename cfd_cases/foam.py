@@ -532,10 +532,11 @@ def set_aside_cut_writes(case: str | Path, log: Callable[[str], None] = print) -
     procs = sorted(p for p in case.glob("processor[0-9]*") if p.is_dir())
     bad: dict[str, tuple[str, list[Path]]] = {}
     names = sorted({t.name for r in procs for t in time_dirs(r)}, key=float)
+    fields_of = {r: _fields_of(r) for r in procs}
     for name in names:
         lacking = [r.name for r in procs if not (r / name).is_dir()]
         why = (f"{', '.join(lacking)} lack{'s' if len(lacking) == 1 else ''} it" if lacking else
-               next((w for r in procs if (w := cut_write(r / name, _fields_of(r))) is not None), None))
+               next((w for r in procs if (w := cut_write(r / name, fields_of[r])) is not None), None))
         if why is not None:
             bad[name] = (why, [r / name for r in procs if (r / name).is_dir()] +
                          ([case / name] if (case / name).is_dir() else []))

@@ -451,7 +451,7 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     results; the same on every machine, see :func:`_restart_state`).
 
     A flooded case maps the velocity and pressure: a fine mesh of the 0.02 D_w gap (4.6 M cells,
-    about 18 s an iteration on 2 cores) then starts from the coarser run's flow instead of a rigid
+    about 22-25 s an iteration on 2 cores alone) then starts from the coarser run's flow instead of a rigid
     rotation and has only its gaps' refinement to settle. Its steady test still waits out its
     own first iterations (``_SteadyMonitor.FLOODED_MIN_ITERATIONS``).
 
