@@ -45,8 +45,8 @@ from typing import Any, TextIO
 
 import numpy as np
 
-from .foam import (FoamError, LogState, controldict_value, read_boundary_geometry, read_field, run_solver,
-                   run_utility, set_aside_cut_writes, set_controldict_value, time_dirs,
+from .foam import (FoamError, LogState, controldict_value, cut_write, read_boundary_geometry, read_field,
+                   run_solver, run_utility, set_aside_cut_writes, set_controldict_value, time_dirs,
                    write_field_values)
 from .forces import ForceSeries, read_forces
 from .geometry import (CELLS_ACROSS_GAP, CELLS_ACROSS_GAP_RANGE, CLEARANCE_RATIO, GAP_RATIO, MESH_LEVELS, RATIO_RANGES,
@@ -424,12 +424,20 @@ def mapping_source_time(src: Path, fields: tuple[str, ...] = ("U", "alpha.oil"))
     """The time folder of case ``src`` that a run started from it maps, and why that one: the
     last regular write before its steady stop (``restart_state_time_s`` in its results, see
     :func:`_restart_state`), else its latest reconstructed time with all of ``fields`` (an oil
-    bath: U and alpha.oil; a flooded case: U and p, its time being the iteration)."""
-    times = [d for d in time_dirs(src) if all((d / f).is_file() for f in fields) and float(d.name) > 0]
+    bath: U and alpha.oil; a flooded case: U and p, its time being the iteration). A time that
+    lacks one of ``fields`` or holds a file cut short (a solver or reconstructPar killed while
+    writing, see :func:`~kegel.cfd_cases.foam.cut_write`) is passed over."""
+    later = [d for d in time_dirs(src) if float(d.name) > 0]
+    unusable = {d.name: reason for d in later if (reason := cut_write(d, fields)) is not None}
+    times = [d for d in later if d.name not in unusable]
     if not times:
-        raise FoamError(f"initial_from = {src}: no reconstructed time with {' and '.join(fields)} after 0 "
+        raise FoamError(f"initial_from = {src}: no whole reconstructed time with {' and '.join(fields)} after 0 "
                         "(run it first; kegel cfd run reconstructs its last time)")
     source_time, why = times[-1].name, "its latest time"
+    cut_later = [reason for d in later if d.name in unusable and float(d.name) > float(source_time)
+                 and "cut short" in (reason := unusable[d.name])]
+    if cut_later:
+        why = f"its latest whole time: {cut_later[-1]}"
     done = src / "results.json"
     restart = json.loads(done.read_text()).get("restart_state_time_s") if done.is_file() else None
     if restart is not None:  # a steady run: the write before its stop point (see _restart_state)

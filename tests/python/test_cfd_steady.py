@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import re
+import shutil
 import time
 from pathlib import Path
 
@@ -223,8 +224,8 @@ def _written_times(case: Path, names: list[str], where: str = "") -> None:
     for name in names:
         d = case / where / name
         d.mkdir(parents=True)
-        for f in ("U", "alpha.oil"):
-            (d / f).write_text("fake")
+        for f in ("U", "alpha.oil"):  # a whole OpenFOAM file ends with its divider
+            (d / f).write_text("fake\n// " + "*" * 73 + " //\n")
 
 
 def test_a_finer_run_maps_the_write_before_the_steady_stop_not_the_last_state(tmp_path):
@@ -246,6 +247,15 @@ def test_a_finer_run_maps_the_write_before_the_steady_stop_not_the_last_state(tm
     assert _restart_state(case, 1, 0.27000000001) == 0.27
     # without results (a run stopped by its budget or end time) the latest time is mapped
     assert mapping_source_time(case) == ("0.3171", "its latest time")
+    # a reconstructed time cut by a killed reconstructPar is passed over, and the reason says so
+    _written_times(case, ["0.32"])
+    (case / "0.32" / "U").write_text("fake\n(1 2")
+    name, why = mapping_source_time(case)
+    assert name == "0.3171" and "latest whole time" in why and "0.32/U is cut short" in why
+    (case / "0.33").mkdir()  # a time without the fields (post-processing only) is passed over silently
+    assert mapping_source_time(case)[0] == "0.3171"
+    for d in ("0.32", "0.33"):
+        shutil.rmtree(case / d)
     (case / "results.json").write_text(json.dumps({"restart_state_time_s": 0.3}))
     assert mapping_source_time(case) == ("0.3", "its last regular write before the steady stop")
     (case / "results.json").write_text(json.dumps({"restart_state_time_s": 0.33}))
