@@ -223,8 +223,11 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
             from .run import point_bearing
 
             R = 0.5 * point_bearing(point).outer_diameter_m
+            from .run import mesh_rotation_rad_s
+
+            turned = mesh_rotation_rad_s(meta) * float(times[-1].name)
             pictures["oil_distribution"] = str(plot_oil_distribution(case, times[-1], zc, case / "oil_distribution.png",
-                                                                     housing_radius_m=R))
+                                                                     housing_radius_m=R, mesh_angle_rad=turned))
     lieb = _liebrecht(point)
     data = json.loads((case / "results.json").read_text())
     data["liebrecht_Nm"] = lieb
@@ -491,9 +494,10 @@ def add_cfd_parser(sub, common) -> None:
                         help='relative tolerance of the steady-torque stop, e.g. 0.02 or "2 %%" (default 0.02); '
                              "0 runs to --end-time (oil bath) or --max-iterations (flooded)")
         sp.add_argument("--max-wall-time", help='stop a run (writing its state) after this long, e.g. "45 min"')
-        sp.add_argument("--frame", choices=("cage", "absolute"), default="cage",
+        sp.add_argument("--frame", choices=("cage", "absolute", "moving_mesh"), default="cage",
                         help="frozen-rotor frame: cage (MRF at the cage speed, default) or absolute (no MRF; "
-                             "a modelling-choice check)")
+                             "a modelling-choice check); moving_mesh (oil bath only): no frozen rotor, the mesh "
+                             "turns with the cage while gravity stays put (the check of the frozen rotor)")
         sp.add_argument("--no-cage", action="store_true",
                         help="leave the cage out of the geometry (a modelling-choice check: the cage's share "
                              "of the loss)")

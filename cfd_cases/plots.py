@@ -57,8 +57,10 @@ def plot_torque_history(case: str | Path, window: Sequence[float], path: str | P
 
 
 def plot_oil_distribution(case: str | Path, time_dir: str | Path, z_m: float, path: str | Path,
-                          *, housing_radius_m: float, title: str = "") -> Path:
-    """Oil volume fraction in the cells near the plane ``z = z_m`` (a slice through the rollers)."""
+                          *, housing_radius_m: float, title: str = "", mesh_angle_rad: float = 0.0) -> Path:
+    """Oil volume fraction in the cells near the plane ``z = z_m`` (a slice through the rollers);
+    ``mesh_angle_rad``: how far a moving mesh has turned about z at that time (its cell centres
+    are stored at t = 0)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -68,6 +70,9 @@ def plot_oil_distribution(case: str | Path, time_dir: str | Path, z_m: float, pa
 
     case, path = Path(case), Path(path)
     c = np.load(case / "cell_centres.npy")
+    if mesh_angle_rad:
+        cos, sin = math.cos(mesh_angle_rad), math.sin(mesh_angle_rad)
+        c = np.column_stack([cos * c[:, 0] - sin * c[:, 1], sin * c[:, 0] + cos * c[:, 1], c[:, 2]])
     alpha = read_field(Path(time_dir) / "alpha.oil")
     if alpha.size == 1:
         alpha = np.full(len(c), float(alpha[0]))

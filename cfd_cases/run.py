@@ -71,7 +71,7 @@ __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rot
 #: (benchmarks/cfd_flooded_convergence.py, docs/cfd.md)
 INITIAL_ROTATION_FRACTION = 0.01
 FLOODED_INITIAL_ROTATION_FRACTION = 1.0
-FRAMES = ("cage", "absolute")
+FRAMES = ("cage", "absolute", "moving_mesh")
 AIR_DENSITY_KG_M3 = 1.2          # at 20-50 degC, 1 bar
 AIR_KINEMATIC_VISCOSITY_M2_S = 1.6e-5
 OIL_AIR_SURFACE_TENSION_N_M = 0.03  # mineral oil against air, typical 0.03 N/m (e.g. Totten, Handbook of Lubrication)
@@ -97,7 +97,11 @@ class CfdPoint:
     # Frame of the steady (frozen-rotor) solution: "cage" - MRF over the whole oil space at the
     # cage speed, so rollers and cage stand still in the frame (the default); "absolute" - no
     # MRF, the same frozen geometry in the inertial frame with the walls' absolute velocities (a
-    # modelling-choice check: the two frozen-rotor readings bracket the effect of the frame)
+    # modelling-choice check: the two frozen-rotor readings bracket the effect of the frame);
+    # "moving_mesh" - oil bath only: no frozen rotor, the whole mesh turns with the cage (a solid
+    # body; rings, shaft and housing are surfaces of revolution, so nothing else needs to move)
+    # while gravity stays put, so the rollers pass through the sump as they do in the bearing (the
+    # check of the frozen rotor; see _write_wall_velocities)
     frame: str = "cage"
     # False: the same bearing without its cage (a modelling-choice check: how much of the loss the
     # cage's presence makes; the cage's torque is then zero and the rollers keep their orbit)
@@ -153,6 +157,9 @@ class CfdPoint:
             raise ValueError(f"cells_across_gap = {self.cells_across_gap!r}: expected a whole number from {c_lo} to {c_hi}")
         if self.frame not in FRAMES:
             raise ValueError(f"frame = {self.frame!r}: expected one of {', '.join(FRAMES)}")
+        if self.frame == "moving_mesh" and self.flooded:
+            raise ValueError("frame = 'moving_mesh': only for an oil bath (a flooded bearing's flow is steady in "
+                             "the cage frame, where the frozen rotor is exact)")
         if self.housing_clearance_m is not None and not (math.isfinite(self.housing_clearance_m)
                                                          and self.housing_clearance_m > 0.0):
             raise ValueError(f"housing_clearance_m = {self.housing_clearance_m}: expected a positive distance")
@@ -335,6 +342,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     phi_ref = cg.roller_azimuth_rad(0) if cg.sector else 0.5 * math.pi
     p_ref = np.array([r_mid * math.cos(phi_ref), r_mid * math.sin(phi_ref), 0.5 * cg.z_min_m])
     omega_i = point.speed_rad_s
+    mesh_motion = kin["cage_rad_s"] if point.frame == "moving_mesh" else None
     if point.flooded:
         template = "bearing_flooded"
         params = {"n_iterations": point.max_iterations, "write_interval": min(100, point.max_iterations)}
@@ -357,6 +365,7 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
         "p_ref_point": p_ref, "n_procs": point.n_procs,
         "periodic_patches": ["periodic_lo", "periodic_hi"] if cg.sector else [],
         "mrf_active": "yes" if point.frame == "cage" else "no",
+        "mesh_motion_rad_s": mesh_motion,
     })
     tmp = case_dir.with_name(case_dir.name + ".preparing")
     render_case(template, tmp, params, overwrite=True)
@@ -370,8 +379,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     quality = check_mesh(tmp)
     mesh_s = time.monotonic() - t0
     start = FLOODED_INITIAL_ROTATION_FRACTION if point.flooded else INITIAL_ROTATION_FRACTION
-    _write_wall_velocities(tmp, kin, rollers, kin["cage_rad_s"] if point.frame == "cage" else 0.0, cage=point.cage,
-                           initial_rotation_fraction=start)
+    _write_wall_velocities(tmp, kin, rollers, 0.0 if point.frame == "absolute" else kin["cage_rad_s"],
+                           cage=point.cage, initial_rotation_fraction=start, moving_mesh=point.frame == "moving_mesh")
     log(f"cfd: mesh {quality.cells} cells, non-orthogonality {quality.max_non_orthogonality_deg:.1f} deg, "
         f"skewness {quality.max_skewness:.2f} (checkMesh OK, {mesh_s:.1f} s)")
     initial = None
@@ -382,6 +391,8 @@ def prepare_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], 
     if point.n_procs > 1:
         run_utility(tmp, "decomposePar", "-force")
     meta = {"point": _point_json(point), "template": template, "kinematics": kin, "initial_state": initial,
+            # frame = moving_mesh: the mesh turns about z at this speed (rad/s); None: a static mesh
+            "mesh_motion_rad_s": mesh_motion,
             # the start rotation's share of the cage speed (None: the fields were mapped, initial_state)
             "initial_oil_rotation_of_cage": start if initial is None else None,
             "mesh": asdict(quality), "mesh_time_s": mesh_s,
@@ -478,6 +489,11 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
     src_point = src_meta.get("point", {})
     # floats within 1e-9: the same temperature given in degC or K
     differ = _differing_settings(src_point, point, RESUMABLE_SETTINGS + _MAPPABLE_SETTINGS, rel_tol=1e-9)
+    if src_point.get("frame") == "moving_mesh":
+        raise FoamError(f"initial_from = {src}: a moving-mesh run; its mesh has turned since t = 0, so its state "
+                        "does not fit a new case (start from a frozen-rotor run of the point, frame = 'cage')")
+    if differ == ["frame"] and point.frame == "moving_mesh" and src_point.get("frame", "cage") == "cage":
+        differ = []  # the frozen rotor stands where the moving mesh starts: release it
     if differ:
         raise FoamError(f"initial_from = {src}: a run of another point (differs in {', '.join(differ)}); "
                         "expected the same bearing, speed, temperature, oil level and lubricant")
@@ -518,11 +534,20 @@ def _map_initial_state(case: Path, point: CfdPoint, log: Callable[[str], None]) 
 
 def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict[str, Any]],
                            frame_rad_s: float, *, cage: bool = True,
-                           initial_rotation_fraction: float = INITIAL_ROTATION_FRACTION) -> None:
+                           initial_rotation_fraction: float = INITIAL_ROTATION_FRACTION,
+                           moving_mesh: bool = False) -> None:
     """Wall velocities of every patch at its face centres (see 0/U) for the MRF frame turning
     at ``frame_rad_s`` (0: no MRF), and the initial oil velocity, a rigid rotation at
     ``initial_rotation_fraction`` of the cage's speed; keeps the cell centres for the oil
-    pictures."""
+    pictures.
+
+    ``moving_mesh``: the mesh turns with the cage at ``frame_rad_s`` (a solid body), so a
+    velocity per face written once would go stale; each wall's velocity is instead an
+    expression of the face's current centre and time (``exprFixedValue``, evaluated every step):
+    ``U = W + P_t(V - W)`` with ``W = omega_c e_z x r`` the mesh's own velocity there and ``V`` the
+    true wall velocity (a roller's orbit plus its spin about its axis, which has turned with the
+    mesh by ``omega_c t``). The wall flux relative to the moving faces is then zero, as in the
+    frozen rotor."""
     run_utility(case, "postProcess", "-func", "writeCellCentres", "-time", "0", log_name="writeCellCentres")
     cells = read_field(case / "0" / "C")
     for f in ("C", "Cx", "Cy", "Cz"):
@@ -545,6 +570,12 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
     missing = set(motions) ^ set(faces)
     if missing:
         raise FoamError(f"{case}: patches {sorted(missing)} have no wall motion or are not in the mesh")
+    if moving_mesh:
+        for name, (w, o) in motions.items():
+            (folder / name).write_text(_moving_wall_expression(name, w, o, frame_rad_s,
+                                                               kin["roller_spin_rad_s"], rollers))
+        write_field_values(case / "0" / "U", initial_rotation_fraction * omega_c * np.cross(ez, cells))
+        return
     for name, (w, o) in motions.items():
         cf, sf = faces[name]
         frame = frame_rad_s * np.cross(ez, cf)
@@ -552,7 +583,7 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
         n = sf / np.linalg.norm(sf, axis=1)[:, None]
         u = frame + rel - n * np.einsum("ij,ij->i", rel, n)[:, None]
         rows = "\n".join(f"({x:.12g} {y:.12g} {z:.12g})" for x, y, z in u)
-        (folder / name).write_text(f"value nonuniform List<vector> {len(u)}\n(\n{rows}\n);\n")
+        (folder / name).write_text(f"type fixedValue;\nvalue nonuniform List<vector> {len(u)}\n(\n{rows}\n);\n")
     # Initial oil velocity: a fraction of the cage's rigid rotation, never exactly rest. The wall
     # fluxes balance only to round-off, and v1912's CorrectPhi/adjustPhi judges that imbalance
     # relative to the internal flux, which is zero for oil at rest (fatal error).
@@ -560,6 +591,36 @@ def _write_wall_velocities(case: Path, kin: dict[str, float], rollers: list[dict
         raise ValueError(f"initial_rotation_fraction = {initial_rotation_fraction}: expected a fraction of the "
                          "cage's speed in (0, 2]")
     write_field_values(case / "0" / "U", initial_rotation_fraction * omega_c * np.cross(ez, cells))
+
+
+def _moving_wall_expression(name: str, w: np.ndarray, o: np.ndarray, omega_mesh: float, omega_spin: float,
+                            rollers: list[dict[str, Any]]) -> str:
+    """The ``exprFixedValue`` entry of wall ``name`` on a mesh turning at ``omega_mesh`` about z
+    (see :func:`_write_wall_velocities`). A roller's true velocity is its orbit (the mesh's) plus
+    its spin ``omega_spin a_k x (r - c_k)`` with its axis and centre turned with the mesh; the
+    spin is evaluated at the face's position at t = 0 (``r0``, the mesh turned back) and turned
+    forward. The rings, shaft and housing turn (or rest) about z: ``V = w x r``."""
+    def num(x: float) -> str:
+        return repr(float(x))
+
+    def vec(v: np.ndarray) -> str:
+        return f"vector({num(v[0])}, {num(v[1])}, {num(v[2])})"
+
+    lines = [f"W = {vec([0.0, 0.0, omega_mesh])} ^ pos()", "n = face()/area()"]
+    roller = next((r for r in rollers if r["name"] == name), None)
+    if roller is None:
+        if abs(float(np.linalg.norm(o))) > 0.0 or abs(w[0]) > 0.0 or abs(w[1]) > 0.0:
+            raise ValueError(f"wall {name}: a moving mesh takes only walls turning about z or rollers")
+        lines.append(f"V = {vec(w)} ^ pos()")
+    else:
+        c0, a0 = np.asarray(roller["centre"], float), np.asarray(roller["roller_axis"], float)
+        lines += [f"th = {num(omega_mesh)}*time()", "ct = cos(th)", "st = sin(th)",
+                  "r0 = vector(ct*pos().x() + st*pos().y(), -st*pos().x() + ct*pos().y(), pos().z())",
+                  f"s0 = {vec(omega_spin * a0)} ^ (r0 - {vec(c0)})",
+                  "V = W + vector(ct*s0.x() - st*s0.y(), st*s0.x() + ct*s0.y(), s0.z())"]
+    body = " ".join(f'"{line}"' for line in lines)
+    return (f"type exprFixedValue;\nvalue uniform (0 0 0);\nvariables ( {body} );\n"
+            'valueExpr "W + (V - W) - n*((V - W) & n)";\n')
 
 
 @dataclass
@@ -774,7 +835,7 @@ class _SteadyMonitor:
         sector's periodic sides carry no net angular momentum, so its ratio is the bearing's."""
         try:
             bodies = [_forces(self.case, b) for b in ("inner_ring", "shaft", "outer_ring", "housing", "cage")]
-            rollers = [(read_forces(self.case, f"forces_{r['name']}"), np.array(r["centre_m"]))
+            rollers = [(_forces(self.case, r["name"]), np.array(r["centre_m"]))
                        for r in (self.meta or {}).get("rollers", [])]
         except (FoamError, OSError):
             return None
@@ -788,23 +849,58 @@ class _SteadyMonitor:
         return None if drive == 0.0 else total / drive
 
 
-def _case_has_cage(case: Path) -> bool:
-    """Whether the case was built with its cage (its kegel-case.json says; True without one)."""
+def _case_meta(case: Path) -> dict[str, Any]:
+    """The case's kegel-case.json ({} without one)."""
     meta = case / "kegel-case.json"
-    if not meta.is_file():
-        return True
-    return json.loads(meta.read_text()).get("point", {}).get("cage", True) is not False
+    return json.loads(meta.read_text()) if meta.is_file() else {}
+
+
+def mesh_rotation_rad_s(meta: dict[str, Any]) -> float:
+    """The speed (rad/s) at which the case's mesh turns about z (``frame = "moving_mesh"``: the
+    cage's); 0 for a static mesh. At time t the mesh has turned by this times t."""
+    return float(meta.get("mesh_motion_rad_s") or 0.0)
+
+
+def _to_initial_position(f: ForceSeries, omega: float, centre: np.ndarray) -> ForceSeries:
+    """A body that turns with the mesh at ``omega`` about z: its forces and its moments about its
+    own (turning) centre, expressed where the body stood at t = 0. The forces function object
+    takes moments about the fixed point ``centre`` (the body's centre at t = 0); about the
+    turned centre ``c(t)`` the moment is ``M - (c(t) - centre) x F``."""
+    th = omega * f.time
+    cos, sin = np.cos(th), np.sin(th)
+    shift = np.column_stack([cos * centre[0] - sin * centre[1], sin * centre[0] + cos * centre[1],
+                             np.full_like(th, centre[2])]) - centre
+
+    def back(v: np.ndarray) -> np.ndarray:
+        return np.column_stack([cos * v[:, 0] + sin * v[:, 1], -sin * v[:, 0] + cos * v[:, 1], v[:, 2]])
+
+    def moment(m: np.ndarray, force: np.ndarray) -> np.ndarray:
+        return back(m - np.cross(shift, force))
+
+    return ForceSeries(f.time, back(f.force_total), back(f.force_pressure), back(f.force_viscous),
+                       moment(f.moment_total, f.force_total), moment(f.moment_pressure, f.force_pressure),
+                       moment(f.moment_viscous, f.force_viscous))
 
 
 def _forces(case: Path, name: str) -> ForceSeries:
     """The force history of body ``name``; the cage of a case built without it (its
     kegel-case.json says so, not a missing force file: a caged case without its cage forces is
-    an error, never a zero) has none: zero forces at the inner ring's times."""
-    if name == "cage" and not _case_has_cage(case):
+    an error, never a zero) has none: zero forces at the inner ring's times. On a moving mesh
+    the cage's and the rollers' forces are taken back to where each stood at t = 0 (see
+    :func:`_to_initial_position`), so that every reading of a frozen rotor applies."""
+    name = name.removeprefix("forces_")
+    meta = _case_meta(case)
+    if name == "cage" and meta.get("point", {}).get("cage", True) is False:
         ref = read_forces(case, "forces_inner_ring")
         z = np.zeros_like(ref.force_total)
         return ForceSeries(ref.time, z, z, z, z, z, z)
-    return read_forces(case, name if name.startswith("forces_") else f"forces_{name}")
+    f = read_forces(case, f"forces_{name}")
+    omega = mesh_rotation_rad_s(meta)
+    if omega != 0.0:
+        centres = {r["name"]: np.array(r["centre_m"], dtype=float) for r in meta.get("rollers", [])}
+        if name == "cage" or name in centres:
+            f = _to_initial_position(f, omega, centres.get(name, np.zeros(3)))
+    return f
 
 
 def _turning_walls(kin: dict[str, float]) -> dict[str, float]:
@@ -824,7 +920,7 @@ def rollers_about_axis(case: Path, meta: dict, t: np.ndarray) -> np.ndarray:
     of the case (a sector's: times its copies for the bearing), at times ``t``."""
     out = np.zeros_like(t, dtype=float)
     for r in meta.get("rollers", []):
-        f = read_forces(case, f"forces_{r['name']}")
+        f = _forces(case, r["name"])
         mz = np.cross(np.array(r["centre_m"]), f.force_total)[:, 2] + f.moment_total[:, 2]
         out += np.interp(t, f.time, mz)
     return out
@@ -841,7 +937,7 @@ def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
         f = _forces(case, name)
         power -= w * np.interp(t, f.time, f.moment_total[:, 2])
     for r in meta["rollers"]:
-        f = read_forces(case, f"forces_{r['name']}")
+        f = _forces(case, r["name"])
         v_c, w_abs = _roller_motion(r, kin)
         power -= np.interp(t, f.time, f.force_total @ v_c + f.moment_total @ w_abs)
     return t, power / abs(kin["inner_ring_rad_s"])
@@ -1061,8 +1157,15 @@ def fluid_gravity_torque(case: Path, meta: dict[str, Any], window: tuple[float, 
             run_utility(case, "reconstructPar", "-time", d.name, log_name="reconstructPar.weight")
         alpha = np.clip(read_field(case / d.name / "alpha.oil"), 0.0, 1.0)
         m = (alpha * rho_oil + (1.0 - alpha) * AIR_DENSITY_KG_M3) * V
-        torques.append(float(np.sum(m * (C[:, 0] * g[1] - C[:, 1] * g[0]))))
+        x, y = _turned_centres(C, mesh_rotation_rad_s(meta) * float(d.name))
+        torques.append(float(np.sum(m * (x * g[1] - y * g[0]))))
     return {"torque_Nm": float(np.mean(torques)), "states_s": [float(d.name) for d in inside]}
+
+
+def _turned_centres(c: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:
+    """The x and y of the cell centres ``c`` (at t = 0) of a mesh turned by ``angle`` about z."""
+    cos, sin = math.cos(angle), math.sin(angle)
+    return cos * c[:, 0] - sin * c[:, 1], sin * c[:, 0] + cos * c[:, 1]
 
 
 def _drift_json(case: Path, meta: dict, window_s: float, until: float | None = None) -> dict[str, Any]:
@@ -1130,7 +1233,7 @@ def _postprocess(case: Path, point: CfdPoint, meta: dict, window, window_s: floa
     rollers = []
     spin_sum = {"total": 0.0, "pressure": 0.0, "viscous": 0.0}
     for r in meta["rollers"]:
-        f = read_forces(case, f"forces_{r['name']}")
+        f = _forces(case, r["name"])
         F0 = mean(f.force_total, f.time)
         M0 = mean(f.moment_total, f.time)
         Mp0, Mv0 = mean(f.moment_pressure, f.time), mean(f.moment_viscous, f.time)

@@ -212,6 +212,37 @@ def test_cfd_modelling_choice_options_are_checked():
     for bad in (dict(frame="rotor"), dict(housing_clearance_m=0.0), dict(housing_clearance_m=math.nan)):
         with pytest.raises(ValueError, match="frame|housing_clearance_m"):
             CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=None, **bad).validate()
+    # a moving mesh is the oil bath's check: a flooded bearing's flow is steady in the cage frame
+    with pytest.raises(ValueError, match="frame = 'moving_mesh': only for an oil bath"):
+        CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=None,
+                 frame="moving_mesh").validate()
+    CfdPoint(bearing="32208", speed_rad_s=200.0, temperature_K=323.15, oil_level_m=0.04, frame="moving_mesh").validate()
+
+
+def test_forces_of_a_body_turning_with_the_mesh_are_read_where_it_stood_at_the_start():
+    """On a moving mesh a roller orbits: the forces function object reports its force in the
+    inertial frame and its moment about the fixed point where its centre was at t = 0. Taken
+    back to the start position, a force and moment that are constant in the roller's own frame
+    must come out constant (a roller that does not turn back gives the rotated vectors)."""
+    from kegel.cfd_cases.forces import ForceSeries
+    from kegel.cfd_cases.run import _to_initial_position
+
+    omega, c0 = 87.6, np.array([0.0, -0.03, 0.0105])
+    f_body, m_body = np.array([0.3, -1.2, 0.4]), np.array([-2e-3, 5e-4, 1e-3])  # about the roller's centre
+    t = np.linspace(0.0, 0.2, 41)  # almost three cage revolutions
+    th = omega * t
+    rot = np.array([[[math.cos(a), -math.sin(a), 0.0], [math.sin(a), math.cos(a), 0.0], [0.0, 0.0, 1.0]] for a in th])
+    f = rot @ f_body
+    c = rot @ c0
+    m_c0 = rot @ m_body + np.cross(c - c0, f)  # the same loads' moment about the fixed point c0
+    series = ForceSeries(t, f, 0.25 * f, 0.75 * f, m_c0, 0.25 * m_c0, 0.75 * m_c0)
+    back = _to_initial_position(series, omega, c0)
+    assert np.allclose(back.force_total, f_body, atol=1e-12) and np.allclose(back.moment_total, m_body, atol=1e-12)
+    assert np.allclose(back.moment_pressure + back.moment_viscous, back.moment_total, atol=1e-12)
+    # the moment about the bearing axis needs no turning back: about the origin it is c x F + M
+    mz = np.cross(c0, back.force_total)[:, 2] + back.moment_total[:, 2]
+    assert np.allclose(mz, np.cross(c0, f)[:, 2] + m_c0[:, 2], atol=1e-12)
+    assert not np.allclose(_to_initial_position(series, 0.5 * omega, c0).force_total, f_body, atol=1e-3)
 
 
 @pytest.mark.openfoam
@@ -472,6 +503,55 @@ def test_oil_bath_starts_from_a_run_on_another_mesh(tiny_bath, tmp_path):
     with pytest.raises(FoamError, match="another point"):
         prepare_case(CfdPoint(bearing="32208", speed_rad_s=0.5 * SPEED, temperature_K=323.15, oil_level_m=level,
                               mesh="tiny", n_procs=1, initial_from=str(source)), tmp_path / "other")
+
+
+@pytest.mark.openfoam
+def test_a_moving_mesh_releases_the_frozen_rotor_and_turns_every_wall_with_it(tiny_bath, tmp_path):
+    """frame = moving_mesh starts from the frozen rotor's state (cage frame) and turns the whole
+    mesh with the cage: after n steps every wall's velocity is the frozen rotor's, turned by the
+    mesh's angle (the expressions against the per-face values kegel writes for the frozen rotor),
+    the oil is kept, and the forces are read. A moving-mesh state cannot start another case."""
+    from kegel.cfd_cases.foam import FoamError
+    from kegel.cfd_cases.run import _write_wall_velocities, prepare_case
+
+    source, res = tiny_bath
+    assert res.returncode == 0, res.stderr[-3000:]
+    level = 0.5 * load_bearing("32208").outer_diameter_m
+    end = 1e-4
+    p = CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=level, mesh="tiny",
+                 n_procs=1, frame="moving_mesh", initial_from=str(source), end_time_s=end, steady_tolerance=0.0)
+    case = tmp_path / "moving"
+    result = run_case(p, case, log=lambda s: None, progress=False)
+    meta = json.loads((case / "kegel-case.json").read_text())
+    omega_c = meta["kinematics"]["cage_rad_s"]
+    assert meta["mesh_motion_rad_s"] == omega_c and "staticFvMesh" not in (case / "constant" / "dynamicMeshDict").read_text()
+    assert math.isfinite(result.loss_torque_at_shaft_Nm) and result.loss_torque_at_shaft_Nm > 0
+    vol = np.array(result.liquid_volume["volume_m3"])
+    assert abs(vol[-1] - vol[0]) / vol[0] < 1e-4  # a solid-body turn of the whole mesh: no interpolation
+    # the frozen rotor's wall velocities at t = 0, as kegel writes them per face
+    frozen = tmp_path / "frozen"
+    shutil.copytree(case / "constant", frozen / "constant")
+    shutil.copytree(case / "system", frozen / "system")
+    (frozen / "0").mkdir()
+    shutil.copy(case / "0" / "U", frozen / "0" / "U")
+    rollers = [{"name": r["name"], "omega": r["wall_rotation_rad_s"], "axis": np.array(r["wall_rotation_axis"]),
+                "origin": np.array(r["wall_rotation_origin_m"])} for r in meta["rollers"]]
+    _write_wall_velocities(frozen, meta["kinematics"], rollers, omega_c)
+    th = omega_c * end
+    rot = np.array([[math.cos(th), -math.sin(th), 0.0], [math.sin(th), math.cos(th), 0.0], [0.0, 0.0, 1.0]])
+    text = (case / f"{end:g}" / "U").read_text()
+    for name in ("roller_00", "roller_09", "inner_ring", "cage", "housing"):
+        u0_text = (frozen / "0" / "wallVelocity" / name).read_text()
+        u0 = np.array([[float(v) for v in r.strip("()").split()] for r in u0_text.split("\n") if r.startswith("(") and len(r) > 2])
+        seg = text[text.index(f"\n    {name}\n"):]
+        seg = seg[seg.index("value"):]
+        n = len(u0)
+        rows = [r for r in seg.split("\n") if r.startswith("(") and len(r) > 2][:n]
+        u = np.array([[float(v) for v in r.strip("()").split()] for r in rows])
+        assert u.shape == u0.shape and np.abs(u - u0 @ rot.T).max() < 1e-8 * max(1.0, np.abs(u0).max()), name
+    with pytest.raises(FoamError, match="moving-mesh run"):
+        prepare_case(CfdPoint(bearing="32208", speed_rad_s=SPEED, temperature_K=323.15, oil_level_m=level,
+                              mesh="tiny", n_procs=1, frame="moving_mesh", initial_from=str(case)), tmp_path / "again")
 
 
 @pytest.mark.openfoam
