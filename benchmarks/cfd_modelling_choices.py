@@ -1,13 +1,15 @@
-"""CFD modelling choices that could move the flooded loss by a factor of two (issue 19, item 3),
-each measured on the tiny mesh of the flooded 32208 at 2000 rpm and 50 degC against the
-reference tiny run (MRF in the cage frame, housing walls at 0.25 T = 4.9 mm):
+"""CFD modelling choices that could move the flooded loss, each measured on the whole bearing's
+tiny mesh of the flooded 32208 at 2000 rpm and 50 degC (real rollers, contacts opened by the
+default slab g = 0.08 D_w) against the reference tiny run (MRF in the cage frame, housing side
+walls at 0.25 T = 6.19 mm):
 
 - frame: no MRF, the same frozen geometry in the inertial frame with the walls' absolute
   velocities (``--frame absolute``);
-- housing wall distance: 2.5 mm and 10 mm instead of 4.9 mm (``--housing-clearance``);
+- housing wall distance: half and twice the default (``--housing-clearance``);
 - the cage's presence: the same bearing without its cage (``--no-cage``; its space is oil).
 
-Runs (or, when a case folder exists, resumes and re-reads) each case on 2 cores:
+The whole bearing, not the sector, because the inertial frame has no repeating sector. Runs (or,
+when a case folder exists, resumes and re-reads) each case on 2 cores:
 
     .venv/bin/python benchmarks/cfd_modelling_choices.py
     .venv/bin/python benchmarks/cfd_modelling_choices.py --only no_cage --np 1
@@ -16,7 +18,9 @@ Runs (or, when a case folder exists, resumes and re-reads) each case on 2 cores:
 (each row records its own kegel version and core count).
 
 Output: benchmarks/results/cfd_modelling_choices.json (loss torque, its deviation from the
-reference, the angular-momentum balance, runtime; the command and kegel version).
+reference, the angular-momentum balance, runtime; the command and kegel version). The same
+checks of the old geometry (rollers shrunk by 0.8 mm) are kept in
+benchmarks/results/cfd_shrunk_rollers/cfd_modelling_choices.json.
 """
 
 from __future__ import annotations
@@ -29,12 +33,24 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 
+
+
+def _default_housing_m() -> float:
+    """The 32208's housing side-wall distance by default (0.25 T = 6.19 mm)."""
+    from kegel.cfd_cases.geometry import HOUSING_CLEARANCE_RATIO
+    from kegel.model.data import load_bearing
+
+    return HOUSING_CLEARANCE_RATIO * load_bearing("32208").total_width_m
+
+
+_DEFAULT_HOUSING_M = _default_housing_m()
 CASES = [  # key, label, CfdPoint settings, case folder
-    ("reference", "reference (MRF, housing 0.25 T)", {}, "results/cfd/32208_2000rpm_flooded_50C_tiny"),
+    ("reference", "reference (MRF, housing 0.25 T)", {}, "results/cfd/choices/reference_tiny"),
     ("frame_absolute", "no MRF (inertial frame)", {"frame": "absolute"}, "results/cfd/choices/frame_absolute_tiny"),
-    ("housing_2.5mm", "housing walls at 2.5 mm", {"housing_clearance_m": 2.5e-3},
-     "results/cfd/choices/housing_2.5mm_tiny"),
-    ("housing_10mm", "housing walls at 10 mm", {"housing_clearance_m": 10e-3}, "results/cfd/choices/housing_10mm_tiny"),
+    ("housing_half", "housing walls at 0.125 T", {"housing_clearance_m": 0.5 * _DEFAULT_HOUSING_M},
+     "results/cfd/choices/housing_half_tiny"),
+    ("housing_double", "housing walls at 0.5 T", {"housing_clearance_m": 2.0 * _DEFAULT_HOUSING_M},
+     "results/cfd/choices/housing_double_tiny"),
     ("no_cage", "without the cage", {"cage": False}, "results/cfd/choices/no_cage_tiny"),
 ]
 OUT = HERE / "results" / "cfd_modelling_choices.json"
@@ -79,7 +95,7 @@ def main(argv: list[str] | None = None) -> int:
     for r in rows:
         r["deviation_from_reference"] = r["loss_torque_Nm"] / ref - 1.0
     atomic_write_json(OUT, {
-        "command": " ".join(["benchmarks/cfd_modelling_choices.py", *(sys.argv[1:] if argv is None else argv)]), "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, tiny",
+        "command": " ".join(["benchmarks/cfd_modelling_choices.py", *(sys.argv[1:] if argv is None else argv)]), "point": "32208, FVA 3, 50 degC, 2000 rpm, flooded, tiny, whole bearing, real rollers, g = 0.08 D_w",
         "rows": rows, "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"{'case':<34}{'loss mN m':>10}{'vs ref':>9}{'IR mN m':>9}{'OR mN m':>9}{'cage':>7}{'balance':>9}{'run s':>7}")
     for r in rows:

@@ -9,7 +9,9 @@ Modelling choices (and what they cost):
   sump) are frozen, so the periodic passage of rollers through the oil bath is replaced by one
   frozen arrangement (roller 0 at the bottom); torque fluctuations at the roller-pass frequency
   are lost, and the mean can carry a bias of the order of the difference between arrangements
-  (half a roller pitch apart).
+  (half a roller pitch apart). ``frame = "moving_mesh"`` is the check: the whole mesh turns with
+  the cage as a solid body (no interface to interpolate across, so the oil is kept), gravity
+  fixed (benchmarks/cfd_oil_bath_moving_mesh.py).
 - Walls carry their absolute velocities: rings and cage turn about z, each roller's orbit plus
   spin is one rotation (see 0/U in the templates); speeds from kegel's pure-rolling kinematics
   (:func:`kegel.tribology.cage_speed_rad_s`).
