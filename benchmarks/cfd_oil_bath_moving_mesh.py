@@ -11,15 +11,18 @@ the rollers dip in and out of the sump as in the bearing. This benchmark runs
    g = 0.08 D_w, Courant 10 / 3);
 2. the moving mesh started from the frozen rotor's state at its steady stop (the rotor
    released), for ``--revolutions`` cage revolutions, not stopped by the steady test;
+3. the control: the frozen rotor run on from the same state for as long (a frozen oil bath's
+   loss itself wanders by a few per cent from revolution to revolution, docs/cfd.md "Oil bath:
+   how steady"), so that the difference of 2 and 3 is the moving mesh's alone;
 
 and compares the loss torque at the shaft, cage revolution by cage revolution after the release,
-with the frozen rotor's steady value, beside the rings', the cage's and the rollers' torques
-about the axis and the oil volume.
+with the frozen rotor's, beside the rings', the cage's and the rollers' torques about the axis
+and the oil volume.
 
-    .venv/bin/python benchmarks/cfd_oil_bath_moving_mesh.py [--revolutions 3] [--np 2]
+    .venv/bin/python benchmarks/cfd_oil_bath_moving_mesh.py [--revolutions 2] [--np 2] [--control-np 1] [--no-run]
 
-Each run resumes when its case folder exists (``results/cfd/moving_mesh/``): give the same
-command again after a stop. Output: ``benchmarks/results/cfd_oil_bath_moving_mesh.json`` (and a
+Each run resumes when its case folder exists and is not finished (``results/cfd/moving_mesh/``):
+give the same command again after a stop; a finished run is read, not run again. Output: ``benchmarks/results/cfd_oil_bath_moving_mesh.json`` (and a
 summary on stdout).
 """
 
@@ -62,58 +65,98 @@ def _summary(case: Path) -> dict:
             "oil_volume_change": (vol[-1] / vol[0] - 1.0) if len(vol) > 1 else None}
 
 
+def _finished(case: Path) -> bool:
+    """Whether the run in ``case`` reached its own end (its steady stop or its end time)."""
+    f = case / "results.json"
+    return f.is_file() and json.loads(f.read_text()).get("stopped_by") in ("steady torque",
+                                                                              "end time / iteration limit")
+
+
+def _by_quarter_revolution(moving: Path, control: Path, rev_s: float, reference_Nm: float) -> list[dict]:
+    """The loss torque at the shaft of the moving mesh and of the frozen rotor run on, over each
+    quarter cage revolution after the release that both runs have covered."""
+    from kegel.cfd_cases.run import loss_torque_series
+
+    def series(case: Path):
+        return loss_torque_series(case, json.loads((case / "kegel-case.json").read_text()))
+
+    (tm, lm), (tc, lc) = series(moving), series(control)
+    q = 0.25 * rev_s
+    rows = []
+    for k in range(int(math.floor(min(tm[-1], tc[-1]) / q + 1e-9))):
+        sm, sc = (tm >= k * q) & (tm < (k + 1) * q), (tc >= k * q) & (tc < (k + 1) * q)
+        if sm.sum() < 5 or sc.sum() < 5:
+            continue
+        m, c = float(lm[sm].mean()), float(lc[sc].mean())
+        rows.append({"cage_revolutions": [0.25 * k, 0.25 * (k + 1)], "from_s": k * q, "to_s": (k + 1) * q,
+                     "moving_mesh_Nm": m, "moving_mesh_range_Nm": [float(lm[sm].min()), float(lm[sm].max())],
+                     "frozen_run_on_Nm": c, "frozen_run_on_range_Nm": [float(lc[sc].min()), float(lc[sc].max())],
+                     "moving_vs_frozen_run_on": m / c - 1.0, "moving_vs_frozen_steady": m / reference_Nm - 1.0})
+    return rows
+
+
 def main(argv: list[str] | None = None) -> int:
     import argparse
 
     import numpy as np
 
     import kegel
-    from kegel.cfd_cases.run import loss_torque_series, run_case
+    from kegel.cfd_cases.run import run_case
     from kegel.io import atomic_write_json, provenance
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--revolutions", type=float, default=3.0,
-                    help="cage revolutions the moving mesh runs after the release (default 3)")
+    ap.add_argument("--revolutions", type=float, default=2.0,
+                    help="cage revolutions the moving mesh (and the control) run after the release (default 2: "
+                         "0.143 s at 2000 rpm, about 30 min each on 2 cores alone)")
     ap.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
+    ap.add_argument("--control-np", type=int,
+                    help="MPI processes of the control run (default --np; a resumed run keeps its own)")
+    ap.add_argument("--no-run", action="store_true",
+                    help="run nothing: compare what the case folders hold so far (an unfinished run's force files)")
     args = ap.parse_args(argv)
 
     def log(s: str) -> None:
         print(s, file=sys.stderr)
 
     frozen_case, moving_case = CASES / "frozen_2000rpm_tiny", CASES / "moving_2000rpm_tiny"
+    control_case = CASES / "frozen_run_on_2000rpm_tiny"
     t0 = time.monotonic()
-    run_case(_point("cage", args.np, max_wall_time_s=3600.0), frozen_case, log=log, progress=False)
+    if not _finished(frozen_case) and not args.no_run:
+        run_case(_point("cage", args.np, max_wall_time_s=3600.0), frozen_case, log=log, progress=False)
     frozen = _summary(frozen_case)
     meta = json.loads((frozen_case / "kegel-case.json").read_text())
     cage_rev_s = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
     end = args.revolutions * cage_rev_s
-    run_case(_point("moving_mesh", args.np, initial_from=str(frozen_case), end_time_s=end, steady_tolerance=0.0),
-             moving_case, log=log, progress=False)
-    moving = _summary(moving_case)
-    moving_meta = json.loads((moving_case / "kegel-case.json").read_text())
-    t, loss = loss_torque_series(moving_case, moving_meta)
-    revs = []
-    for k in range(int(math.floor(t[-1] / cage_rev_s + 1e-9))):
-        sel = (t >= k * cage_rev_s) & (t < (k + 1) * cage_rev_s)
-        if sel.sum() < 10:
-            continue
-        m = float(loss[sel].mean())
-        revs.append({"cage_revolution": k + 1, "from_s": k * cage_rev_s, "to_s": (k + 1) * cage_rev_s,
-                     "loss_torque_Nm": m, "vs_frozen": m / frozen["loss_torque_Nm"] - 1.0,
-                     "min_Nm": float(loss[sel].min()), "max_Nm": float(loss[sel].max())})
+    for frame, case, n in (("moving_mesh", moving_case, args.np), ("cage", control_case, args.control_np or args.np)):
+        if not _finished(case) and not args.no_run:
+            run_case(_point(frame, n, initial_from=str(frozen_case), end_time_s=end, steady_tolerance=0.0),
+                     case, log=log, progress=False)
+    done = _finished(moving_case) and _finished(control_case)
+    moving = _summary(moving_case) if _finished(moving_case) else None
+    control = _summary(control_case) if _finished(control_case) else None
+    rows = _by_quarter_revolution(moving_case, control_case, cage_rev_s, frozen["loss_torque_Nm"])
+    both = [r for r in rows if r["from_s"] >= rows[-1]["from_s"] - 0.75 * cage_rev_s - 1e-12] if rows else []
+    last_rev = (sum(r["moving_mesh_Nm"] for r in both) / sum(r["frozen_run_on_Nm"] for r in both) - 1.0
+                if len(both) == 4 else None)
     atomic_write_json(OUT, {
         "command": " ".join(["benchmarks/cfd_oil_bath_moving_mesh.py", *(sys.argv[1:] if argv is None else argv)]),
         "point": "32208, FVA 3, 50 degC, 2000 rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
                  "Courant 10 / 3",
+        "partial": not done, "released_for_s": rows[-1]["to_s"] if rows else 0.0,
         "cage_revolution_s": cage_rev_s, "frozen_rotor": frozen, "moving_mesh": moving,
-        "moving_mesh_by_cage_revolution": revs,
-        "moving_vs_frozen_last_revolution": revs[-1]["vs_frozen"] if revs else None,
+        "frozen_rotor_run_on": control, "by_quarter_cage_revolution": rows,
+        "moving_vs_frozen_run_on_last_revolution": last_rev,
         "session_wall_s": time.monotonic() - t0, "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"frozen rotor: {1e3 * frozen['loss_torque_Nm']:.2f} mN m (steady: {frozen['steady']}, "
-          f"{frozen['runtime_s'] / 60:.0f} min)")
-    for r in revs:
-        print(f"moving mesh, cage revolution {r['cage_revolution']}: {1e3 * r['loss_torque_Nm']:.2f} mN m "
-              f"({100 * r['vs_frozen']:+.1f} %; {1e3 * r['min_Nm']:.1f}-{1e3 * r['max_Nm']:.1f})")
+          f"{frozen['runtime_s'] / 60:.0f} min)" + ("" if done else "; the released runs are not finished"))
+    for r in rows:
+        a, b = r["cage_revolutions"]
+        print(f"cage revolutions {a:.2f}-{b:.2f}: moving mesh {1e3 * r['moving_mesh_Nm']:.2f} mN m, frozen run on "
+              f"{1e3 * r['frozen_run_on_Nm']:.2f}: {100 * r['moving_vs_frozen_run_on']:+.1f} %")
+    if last_rev is not None:
+        print(f"last cage revolution: moving mesh {100 * last_rev:+.1f} % against the frozen rotor run on")
+    if moving is None:
+        return 0
     print(f"moving mesh: {moving['runtime_s'] / 60:.0f} min, oil volume change {moving['oil_volume_change']}")
     return 0 if np.isfinite(moving["loss_torque_Nm"]) else 1
 
