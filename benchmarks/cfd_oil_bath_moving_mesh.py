@@ -83,7 +83,7 @@ def _by_quarter_revolution(moving: Path, control: Path, rev_s: float, reference_
     (tm, lm), (tc, lc) = series(moving), series(control)
     q = 0.25 * rev_s
     rows = []
-    for k in range(int(math.floor(min(tm[-1], tc[-1]) / q + 1e-9))):
+    for k in range(int(math.floor(min(tm[-1], tc[-1]) / q + 0.01))):  # a run ends within a step of its end time
         sm, sc = (tm >= k * q) & (tm < (k + 1) * q), (tc >= k * q) & (tc < (k + 1) * q)
         if sm.sum() < 5 or sc.sum() < 5:
             continue
