@@ -65,11 +65,16 @@ def _summary(case: Path) -> dict:
             "oil_volume_change": (vol[-1] / vol[0] - 1.0) if len(vol) > 1 else None}
 
 
-def _finished(case: Path) -> bool:
-    """Whether the run in ``case`` reached its own end (its steady stop or its end time)."""
+def _finished(case: Path, end_s: float | None = None) -> bool:
+    """Whether the run in ``case`` reached its own end (its steady stop or its end time) and, when
+    ``end_s`` is given, ran that far (a longer ``--revolutions`` runs it on)."""
     f = case / "results.json"
-    return f.is_file() and json.loads(f.read_text()).get("stopped_by") in ("steady torque",
-                                                                              "end time / iteration limit")
+    if not f.is_file():
+        return False
+    data = json.loads(f.read_text())
+    if data.get("stopped_by") not in ("steady torque", "end time / iteration limit"):
+        return False
+    return end_s is None or float(data.get("simulated_time_s") or 0.0) >= end_s * (1.0 - 1e-3)
 
 
 def _by_quarter_revolution(moving: Path, control: Path, rev_s: float, reference_Nm: float) -> list[dict]:
@@ -128,7 +133,7 @@ def main(argv: list[str] | None = None) -> int:
     cage_rev_s = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
     end = args.revolutions * cage_rev_s
     for frame, case, n in (("moving_mesh", moving_case, args.np), ("cage", control_case, args.control_np or args.np)):
-        if not _finished(case) and not args.no_run:
+        if not _finished(case, end) and not args.no_run:
             run_case(_point(frame, n, initial_from=str(frozen_case), end_time_s=end, steady_tolerance=0.0),
                      case, log=log, progress=False)
     done = _finished(moving_case) and _finished(control_case)
