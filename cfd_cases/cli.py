@@ -220,11 +220,9 @@ def _run_one(point, case: Path, args) -> dict[str, Any]:
         times = [p for p in time_dirs(case) if (p / "alpha.oil").is_file()]
         if times:
             zc = float(np.mean([r["centre_m"][2] for r in meta["rollers"]]))
-            from .run import point_bearing
+            from .run import mesh_rotation_rad_s, point_bearing
 
             R = 0.5 * point_bearing(point).outer_diameter_m
-            from .run import mesh_rotation_rad_s
-
             turned = mesh_rotation_rad_s(meta) * float(times[-1].name)
             pictures["oil_distribution"] = str(plot_oil_distribution(case, times[-1], zc, case / "oil_distribution.png",
                                                                      housing_radius_m=R, mesh_angle_rad=turned))

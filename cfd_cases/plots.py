@@ -71,8 +71,9 @@ def plot_oil_distribution(case: str | Path, time_dir: str | Path, z_m: float, pa
     case, path = Path(case), Path(path)
     c = np.load(case / "cell_centres.npy")
     if mesh_angle_rad:
-        cos, sin = math.cos(mesh_angle_rad), math.sin(mesh_angle_rad)
-        c = np.column_stack([cos * c[:, 0] - sin * c[:, 1], sin * c[:, 0] + cos * c[:, 1], c[:, 2]])
+        from .run import _rotation_z
+
+        c = c @ _rotation_z(mesh_angle_rad).T
     alpha = read_field(Path(time_dir) / "alpha.oil")
     if alpha.size == 1:
         alpha = np.full(len(c), float(alpha[0]))

@@ -1159,15 +1159,9 @@ def fluid_gravity_torque(case: Path, meta: dict[str, Any], window: tuple[float, 
             run_utility(case, "reconstructPar", "-time", d.name, log_name="reconstructPar.weight")
         alpha = np.clip(read_field(case / d.name / "alpha.oil"), 0.0, 1.0)
         m = (alpha * rho_oil + (1.0 - alpha) * AIR_DENSITY_KG_M3) * V
-        x, y = _turned_centres(C, mesh_rotation_rad_s(meta) * float(d.name))
-        torques.append(float(np.sum(m * (x * g[1] - y * g[0]))))
+        c = C @ _rotation_z(mesh_rotation_rad_s(meta) * float(d.name)).T  # a moving mesh has turned
+        torques.append(float(np.sum(m * (c[:, 0] * g[1] - c[:, 1] * g[0]))))
     return {"torque_Nm": float(np.mean(torques)), "states_s": [float(d.name) for d in inside]}
-
-
-def _turned_centres(c: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:
-    """The x and y of the cell centres ``c`` (at t = 0) of a mesh turned by ``angle`` about z."""
-    cos, sin = math.cos(angle), math.sin(angle)
-    return cos * c[:, 0] - sin * c[:, 1], sin * c[:, 0] + cos * c[:, 1]
 
 
 def _drift_json(case: Path, meta: dict, window_s: float, until: float | None = None) -> dict[str, Any]:
