@@ -100,6 +100,46 @@ def _by_quarter_revolution(moving: Path, control: Path, rev_s: float, reference_
     return rows
 
 
+def _harmonic_amplitude(t, y, f_hz: float) -> float:
+    """The amplitude of the component of frequency ``f_hz`` in the series ``y(t)``, over a span of
+    a whole number of its periods (trapezoidal Fourier coefficient on the solver's own steps)."""
+    import numpy as np
+
+    span = t[-1] - t[0]
+    e = np.exp(-2j * math.pi * f_hz * t)
+    return float(2.0 * abs(np.trapezoid(y * e, t)) / span)
+
+
+def _last_revolution(moving: Path, control: Path, rev_s: float) -> dict:
+    """Over the last cage revolution both runs covered: the mean of the loss torque at the shaft
+    and of each body's torque about the bearing axis (the rollers summed: their orbit drag), and
+    the amplitude of each at the roller-pass frequency (rollers x cage revolutions per second),
+    the ripple a roller passing through the oil surface makes on a moving mesh. A frozen rotor's
+    rollers pass nothing, so its amplitude there is the noise floor."""
+    import numpy as np
+
+    from kegel.cfd_cases.run import _forces, loss_torque_series, rollers_about_axis
+
+    out: dict = {}
+    metas = {c: json.loads((c / "kegel-case.json").read_text()) for c in (moving, control)}
+    t_end = min(float(loss_torque_series(c, m)[0][-1]) for c, m in metas.items())
+    z = len(metas[moving]["rollers"])
+    f_pass = z / rev_s
+    for label, case in (("moving_mesh", moving), ("frozen_run_on", control)):
+        meta = metas[case]
+        t, loss = loss_torque_series(case, meta)
+        k = (t > t_end - rev_s) & (t <= t_end)
+        tk = t[k]
+        series = {"loss_torque_at_shaft": loss[k], "rollers_about_axis": rollers_about_axis(case, meta, tk)}
+        for body in ("inner_ring", "outer_ring", "cage", "housing", "shaft"):
+            f = _forces(case, body)
+            series[body] = np.interp(tk, f.time, f.moment_total[:, 2])
+        out[label] = {name: {"mean_Nm": float(np.mean(y)), "roller_pass_amplitude_Nm": _harmonic_amplitude(tk, y, f_pass),
+                             "std_Nm": float(np.std(y))} for name, y in series.items()}
+    out.update({"from_s": t_end - rev_s, "to_s": t_end, "roller_pass_hz": f_pass, "rollers": z})
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     import argparse
 
@@ -151,6 +191,7 @@ def main(argv: list[str] | None = None) -> int:
         "cage_revolution_s": cage_rev_s, "frozen_rotor": frozen, "moving_mesh": moving,
         "frozen_rotor_run_on": control, "by_quarter_cage_revolution": rows,
         "moving_vs_frozen_run_on_last_revolution": last_rev,
+        "last_revolution_by_body": _last_revolution(moving_case, control_case, cage_rev_s) if rows else None,
         "session_wall_s": time.monotonic() - t0, "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"frozen rotor: {1e3 * frozen['loss_torque_Nm']:.2f} mN m (steady: {frozen['steady']}, "
           f"{frozen['runtime_s'] / 60:.0f} min)" + ("" if done else "; the released runs are not finished"))
@@ -160,6 +201,14 @@ def main(argv: list[str] | None = None) -> int:
               f"{1e3 * r['frozen_run_on_Nm']:.2f}: {100 * r['moving_vs_frozen_run_on']:+.1f} %")
     if last_rev is not None:
         print(f"last cage revolution: moving mesh {100 * last_rev:+.1f} % against the frozen rotor run on")
+    if rows:
+        lr = _last_revolution(moving_case, control_case, cage_rev_s)
+        print(f"last cage revolution ({lr['from_s']:.3f}-{lr['to_s']:.3f} s), mean and amplitude at the roller "
+              f"pass ({lr['roller_pass_hz']:.0f} Hz), moving mesh | frozen run on, mN m:")
+        for name, m in lr["moving_mesh"].items():
+            c = lr["frozen_run_on"][name]
+            print(f"  {name:22s} {1e3 * m['mean_Nm']:8.3f} {1e3 * m['roller_pass_amplitude_Nm']:7.3f} | "
+                  f"{1e3 * c['mean_Nm']:8.3f} {1e3 * c['roller_pass_amplitude_Nm']:7.3f}")
     if moving is None:
         return 0
     print(f"moving mesh: {moving['runtime_s'] / 60:.0f} min, oil volume change {moving['oil_volume_change']}")

@@ -15,8 +15,10 @@ the last window, and over all three windows), and their deviations from the refe
     .venv/bin/python benchmarks/cfd_oil_bath_stop_rule.py [--work DIR] [--end-time 0.75]
 
 The reference run goes to ``DIR/reference`` (default: a temporary folder, removed afterwards); a
-run there that already reached the end time is reused. Not part of ``make bench``. Output:
-benchmarks/results/cfd_oil_bath_stop_rule.json and .png.
+run there that already reached the end time is reused, one that did not is resumed (so a copy of
+a frozen run stopped by the runner's rule runs on from its stop). Not part of ``make bench``.
+Output: benchmarks/results/cfd_oil_bath_stop_rule.json and .png. The measurements below are of
+the old shrunk rollers (their files: benchmarks/results/cfd_shrunk_rollers/).
 
 Measured (``--work results/cfd/stop_rule2 --end-time 0.9``, alone on 2 cores, 36.5 min, commit
 9f7c52d; the json and png in benchmarks/results are this run): the loss falls to 18.5 mN m at
@@ -62,14 +64,20 @@ VARIANTS = [(0.5, 0.02, 0.0), (0.5, 0.02, 0.5), (0.5, 0.02, 1.0), (0.5, 0.01, 0.
 
 
 def clock_of_time(case: Path) -> tuple[np.ndarray, np.ndarray]:
-    """Simulated time and the solver's wall clock (``ClockTime``) after each step, from the log."""
-    times, clocks, t = [], [], None
+    """Simulated time and the solver's wall clock (``ClockTime``) after each step, from the log.
+    The runner appends a resumed run's log, whose clock starts again from zero: each restart
+    adds the clock the earlier runs had reached, so the clock counts solver time only."""
+    times, clocks, t, offset, last = [], [], None, 0.0, 0.0
     for line in (case / "log.interFoam").read_text(errors="replace").splitlines():
         if m := re.match(r"^Time = (\S+)", line):
             t = float(m.group(1))
         elif (m := re.match(r"^ExecutionTime = \S+ s\s+ClockTime = (\S+) s", line)) and t is not None:
+            c = float(m.group(1))
+            if c + offset < last:  # a restart
+                offset = last
+            last = c + offset
             times.append(t)
-            clocks.append(float(m.group(1)))
+            clocks.append(last)
     return np.array(times), np.array(clocks)
 
 
