@@ -20,7 +20,15 @@ a frozen run stopped by the runner's rule runs on from its stop). Not part of ``
 Output: benchmarks/results/cfd_oil_bath_stop_rule.json and .png. The measurements below are of
 the old shrunk rollers (their files: benchmarks/results/cfd_shrunk_rollers/).
 
-Measured (``--work results/cfd/stop_rule2 --end-time 0.9``, alone on 2 cores, 36.5 min, commit
+Measured with the real rollers (``--work results/cfd/stop_rule_real --end-time 0.75``, the case a
+copy of the shipped 2000 rpm point's frozen run stopped by the old rule at 0.216 s, resumed to
+0.75 s; 4984 s of solver wall time in all, alone on 2 cores; the json and png in
+benchmarks/results): plateau 27.2-27.9 mN m from 2.0 to 3.5 cage revolutions, rise to 31.2 by 5,
+then 30.7-31.6; reference 30.95 mN m. The old rule (half-revolution windows, 2 %, from 3
+revolutions) stopped on the plateau at 0.215 s, -11.8 %; the runner's rule now (the same, held
+for half a window, from 5 revolutions) stops at 0.378 s (2628 s), +0.2 %.
+
+Measured with the old shrunk rollers (``--work results/cfd/stop_rule2 --end-time 0.9``, alone on 2 cores, 36.5 min, commit
 9f7c52d; the json and png in benchmarks/results are this run): the loss falls to 18.5 mN m at
 0.06 s, rises with a dip at 0.2 s to 24.3 mN m in the fourth cage revolution, and then stays
 within 23.5-24.8 mN m per revolution to 0.86 s (reference, the last three revolutions: 23.69 mN m),
@@ -56,11 +64,15 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 
-#: (window in cage revolutions, relative tolerance, hold in windows) of the variants replayed;
-#: the first is the runner's rule (kegel.cfd_cases.run: STEADY_WINDOW_CAGE_REVOLUTIONS,
-#: CfdPoint.steady_tolerance, STEADY_HOLD_WINDOWS).
-VARIANTS = [(0.5, 0.02, 0.0), (0.5, 0.02, 0.5), (0.5, 0.02, 1.0), (0.5, 0.01, 0.0), (0.5, 0.01, 1.0),
-            (1.0, 0.02, 0.0), (1.0, 0.02, 1.0)]
+#: (window in cage revolutions, relative tolerance, hold in windows, minimum cage revolutions from
+#: rest) of the variants replayed. The runner's rule (kegel.cfd_cases.run:
+#: STEADY_WINDOW_CAGE_REVOLUTIONS, CfdPoint.steady_tolerance, STEADY_HOLD_WINDOWS,
+#: STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST) is marked in the output; the first is the rule the runner
+#: had until the real rollers' run on showed it stopping on a false plateau.
+VARIANTS = [(0.5, 0.02, 0.0, 3.0), (0.5, 0.02, 0.5, 3.0), (0.5, 0.02, 1.0, 3.0), (0.5, 0.01, 0.0, 3.0),
+            (0.5, 0.01, 1.0, 3.0), (1.0, 0.02, 0.0, 3.0), (1.0, 0.02, 1.0, 3.0),
+            (0.5, 0.02, 0.0, 5.0), (0.5, 0.02, 0.0, 6.0), (1.0, 0.02, 0.0, 5.0), (1.0, 0.02, 0.0, 6.0),
+            (1.0, 0.01, 0.0, 6.0), (0.5, 0.02, 0.5, 5.0), (0.5, 0.02, 1.0, 5.0)]
 
 
 def clock_of_time(case: Path) -> tuple[np.ndarray, np.ndarray]:
@@ -95,6 +107,7 @@ def _reference_run(case: Path, end_time_s: float) -> None:
 
 
 def main(argv: list[str]) -> int:
+    from kegel.cfd_cases import run as runner
     from kegel.cfd_cases.run import _SteadyMonitor, loss_torque_series, steady_min_time_s
     from kegel.cfd_cases.steady import first_steady_time, window_means
     from kegel.io import atomic_write_json, provenance
@@ -125,12 +138,15 @@ def main(argv: list[str]) -> int:
     reference = float(window_means(t, loss, span, 1)[0])
     min_time = steady_min_time_s(meta["kinematics"]["cage_rad_s"])
     rows = []
-    for revs, tol, hold in VARIANTS:
+    runners = (runner.STEADY_WINDOW_CAGE_REVOLUTIONS, runner.CfdPoint.steady_tolerance,
+               runner.STEADY_HOLD_WINDOWS, runner.STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST)
+    for revs, tol, hold, min_revs in VARIANTS:
         w = revs * rev
         step = w / _SteadyMonitor.CHECK_PER_WINDOW  # the runner's check points
-        ts = first_steady_time(t, loss, w, tol, min_time=min_time, hold=hold * w,
+        ts = first_steady_time(t, loss, w, tol, min_time=min_revs * rev, hold=hold * w,
                                check_times=step * np.arange(1, math.floor(t[-1] / step) + 1))
         row = {"window_cage_revolutions": revs, "window_s": w, "tolerance": tol, "hold_windows": hold,
+               "min_cage_revolutions_from_rest": min_revs, "runners_rule": (revs, tol, hold, min_revs) == runners,
                "stop_time_s": ts}
         if ts is not None:
             k = t <= ts
@@ -156,16 +172,18 @@ def main(argv: list[str]) -> int:
           f"({report['wall_time_s'] or math.nan:.0f} s wall); reference = mean over the last "
           f"{args.reference_revolutions:g} cage revolutions = {1e3 * reference:.2f} mN m "
           f"(per revolution: {', '.join(f'{1e3 * x:.2f}' for x in per_rev)})")
-    print(f"{'window rev':>10}{'tol':>6}{'hold':>6}{'stop at s':>10}{'wall s':>8}{'last window':>12}{'dev':>8}"
-          f"{'3 windows':>11}{'dev':>8}")
+    print(f"{'window rev':>10}{'tol':>6}{'hold':>6}{'min rev':>8}{'stop at s':>10}{'wall s':>8}{'last window':>12}"
+          f"{'dev':>8}{'3 windows':>11}{'dev':>8}")
     for r in rows:
+        head = (f"{r['window_cage_revolutions']:>10g}{r['tolerance']:>6g}{r['hold_windows']:>6g}"
+                f"{r['min_cage_revolutions_from_rest']:>8g}")
+        mark = "  (the runner's rule)" if r["runners_rule"] else ""
         if r["stop_time_s"] is None:
-            print(f"{r['window_cage_revolutions']:>10g}{r['tolerance']:>6g}{r['hold_windows']:>6g}"
-                  "   never steady before the end")
+            print(head + "   never steady before the end" + mark)
             continue
-        print(f"{r['window_cage_revolutions']:>10g}{r['tolerance']:>6g}{r['hold_windows']:>6g}{r['stop_time_s']:>10.3f}{r['wall_time_s']:>8.0f}"
+        print(head + f"{r['stop_time_s']:>10.3f}{r['wall_time_s']:>8.0f}"
               f"{1e3 * r['loss_last_window_Nm']:>12.2f}{100 * r['deviation_last_window']:>+7.1f}%"
-              f"{1e3 * r['loss_three_windows_Nm']:>11.2f}{100 * r['deviation_three_windows']:>+7.1f}%")
+              f"{1e3 * r['loss_three_windows_Nm']:>11.2f}{100 * r['deviation_three_windows']:>+7.1f}%" + mark)
     return 0
 
 
@@ -183,7 +201,7 @@ def _plot(path: Path, t, loss, rev, reference, span, rows) -> None:
         if r["stop_time_s"] is not None:
             ax.plot([r["stop_time_s"]], [1e3 * r["loss_last_window_Nm"]], "o",
                     label=f"stop: window {r['window_cage_revolutions']:g} rev, tol {100 * r['tolerance']:g} %, "
-                          f"hold {r['hold_windows']:g} windows")
+                          f"hold {r['hold_windows']:g} windows, from {r['min_cage_revolutions_from_rest']:g} rev")
     lo = np.percentile(loss[t > 0.1 * t[-1]], 1)
     hi = np.percentile(loss[t > 0.1 * t[-1]], 99)
     ax.set_ylim(1e3 * lo * 0.9, 1e3 * hi * 1.1)
