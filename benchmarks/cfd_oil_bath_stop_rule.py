@@ -12,12 +12,13 @@ For each it reports, side by side: the simulated and the wall time at which the 
 stopped (the wall time from the solver log's clock), the loss it would have reported (mean over
 the last window, and over all three windows), and their deviations from the reference.
 
-    .venv/bin/python benchmarks/cfd_oil_bath_stop_rule.py [--work DIR] [--end-time 0.75]
+    .venv/bin/python benchmarks/cfd_oil_bath_stop_rule.py [--work DIR] [--end-time 0.75] [--speed 2000]
 
 The reference run goes to ``DIR/reference`` (default: a temporary folder, removed afterwards); a
 run there that already reached the end time is reused, one that did not is resumed (so a copy of
 a frozen run stopped by the runner's rule runs on from its stop). Not part of ``make bench``.
-Output: benchmarks/results/cfd_oil_bath_stop_rule.json and .png. The measurements below are of
+Output: benchmarks/results/cfd_oil_bath_stop_rule.json, .png and _series.csv (the loss torque
+series the rules were replayed on; another ``--speed`` adds ``_<N>rpm`` to the names). The measurements below are of
 the old shrunk rollers (their files: benchmarks/results/cfd_shrunk_rollers/).
 
 Measured with the real rollers (``--work results/cfd/stop_rule_real --end-time 0.75``, the case a
@@ -93,14 +94,14 @@ def clock_of_time(case: Path) -> tuple[np.ndarray, np.ndarray]:
     return np.array(times), np.array(clocks)
 
 
-def _reference_run(case: Path, end_time_s: float) -> None:
+def _reference_run(case: Path, end_time_s: float, speed_rpm: float) -> None:
     from kegel.cfd_cases.run import CfdPoint, run_case
     from kegel.data import load_bearing
 
     done = case / "results.json"
     if done.is_file() and json.loads(done.read_text())["simulated_time_s"] >= end_time_s * (1 - 1e-6):
         return
-    p = CfdPoint(bearing="32208", speed_rad_s=2000 * math.pi / 30, temperature_K=323.15,
+    p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=323.15,
                  oil_level_m=0.5 * load_bearing("32208").outer_diameter_m, mesh="tiny", n_procs=2,
                  max_courant=10.0, max_interface_courant=3.0, end_time_s=end_time_s, steady_tolerance=0.0)
     run_case(p, case, progress=False, log=lambda m: print(m, file=sys.stderr))
@@ -115,13 +116,15 @@ def main(argv: list[str]) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--work", help="folder for the reference run (kept); default: a temporary folder")
     ap.add_argument("--end-time", type=float, default=0.75, help="simulated seconds (default 0.75)")
+    ap.add_argument("--speed", type=float, default=2000.0,
+                    help="shaft speed in rpm (default 2000; another speed writes ..._<N>rpm.json / .png)")
     ap.add_argument("--reference-revolutions", type=float, default=3.0,
                     help="cage revolutions at the end averaged for the reference (default 3)")
     args = ap.parse_args(argv)
     work = Path(args.work) if args.work else Path(tempfile.mkdtemp(prefix="kegel-stop-rule-"))
     case = work / "reference"
     try:
-        _reference_run(case, args.end_time)
+        _reference_run(case, args.end_time, args.speed)
         meta = json.loads((case / "kegel-case.json").read_text())
         t, loss = loss_torque_series(case, meta)
         t_log, clock = clock_of_time(case)
@@ -159,15 +162,23 @@ def main(argv: list[str]) -> int:
         rows.append(row)
     out = HERE / "results"
     out.mkdir(exist_ok=True)
-    report = {"point": "32208, 2000 rpm, 50 degC, oil to the shaft centre, tiny mesh, 2 cores, Courant 10 / 3",
+    report = {"command": " ".join(["benchmarks/cfd_oil_bath_stop_rule.py", *argv]),
+              "point": f"32208, {args.speed:g} rpm, 50 degC, oil to the shaft centre, tiny mesh, 2 cores, Courant 10 / 3",
               "cells": result["fidelity"]["cells"], "end_time_s": float(t[-1]),
               "wall_time_s": float(clock[-1]) if len(clock) else None, "cage_revolution_s": rev,
               "reference_revolutions": args.reference_revolutions, "reference_loss_Nm": reference,
               "reference_per_revolution_means_Nm": [float(x) for x in per_rev],
               "min_time_from_rest_s": min_time, "rows": rows, "case": str(case),
               "provenance": provenance()}
-    atomic_write_json(out / "cfd_oil_bath_stop_rule.json", report)
-    _plot(out / "cfd_oil_bath_stop_rule.png", t, loss, rev, reference, span, rows)
+    stem = "cfd_oil_bath_stop_rule" + ("" if args.speed == 2000.0 else f"_{args.speed:g}rpm")
+    atomic_write_json(out / f"{stem}.json", report)
+    # the series itself, for the regression test of the runner's rule (tests/python/test_cfd_steady.py)
+    lines = ["# " + report["point"] + "; loss torque at the shaft from rest", "time_s,loss_torque_Nm"]
+    lines += [f"{a:.8g},{b:.6g}" for a, b in zip(t, loss)]
+    tmp = out / f".{stem}_series.csv.tmp"
+    tmp.write_text("\n".join(lines) + "\n")
+    tmp.replace(out / f"{stem}_series.csv")
+    _plot(out / f"{stem}.png", t, loss, rev, reference, span, rows)
     print(f"tiny 32208 oil bath, {result['fidelity']['cells']} cells, run to {t[-1]:.3f} s "
           f"({report['wall_time_s'] or math.nan:.0f} s wall); reference = mean over the last "
           f"{args.reference_revolutions:g} cage revolutions = {1e3 * reference:.2f} mN m "
