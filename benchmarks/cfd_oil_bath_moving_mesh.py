@@ -122,12 +122,13 @@ def _last_revolution(moving: Path, control: Path, rev_s: float) -> dict:
 
     out: dict = {}
     metas = {c: json.loads((c / "kegel-case.json").read_text()) for c in (moving, control)}
-    t_end = min(float(loss_torque_series(c, m)[0][-1]) for c, m in metas.items())
+    losses = {c: loss_torque_series(c, m) for c, m in metas.items()}
+    t_end = min(float(t[-1]) for t, _ in losses.values())
     z = len(metas[moving]["rollers"])
     f_pass = z / rev_s
     for label, case in (("moving_mesh", moving), ("frozen_run_on", control)):
         meta = metas[case]
-        t, loss = loss_torque_series(case, meta)
+        t, loss = losses[case]
         k = (t > t_end - rev_s) & (t <= t_end)
         tk = t[k]
         series = {"loss_torque_at_shaft": loss[k], "rollers_about_axis": rollers_about_axis(case, meta, tk)}
@@ -183,6 +184,7 @@ def main(argv: list[str] | None = None) -> int:
     both = [r for r in rows if r["from_s"] >= rows[-1]["from_s"] - 0.75 * cage_rev_s - 1e-12] if rows else []
     last_rev = (sum(r["moving_mesh_Nm"] for r in both) / sum(r["frozen_run_on_Nm"] for r in both) - 1.0
                 if len(both) == 4 else None)
+    by_body = _last_revolution(moving_case, control_case, cage_rev_s) if rows else None
     atomic_write_json(OUT, {
         "command": " ".join(["benchmarks/cfd_oil_bath_moving_mesh.py", *(sys.argv[1:] if argv is None else argv)]),
         "point": "32208, FVA 3, 50 degC, 2000 rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
@@ -191,7 +193,7 @@ def main(argv: list[str] | None = None) -> int:
         "cage_revolution_s": cage_rev_s, "frozen_rotor": frozen, "moving_mesh": moving,
         "frozen_rotor_run_on": control, "by_quarter_cage_revolution": rows,
         "moving_vs_frozen_run_on_last_revolution": last_rev,
-        "last_revolution_by_body": _last_revolution(moving_case, control_case, cage_rev_s) if rows else None,
+        "last_revolution_by_body": by_body,
         "session_wall_s": time.monotonic() - t0, "kegel_version": kegel.__version__, "provenance": provenance()})
     print(f"frozen rotor: {1e3 * frozen['loss_torque_Nm']:.2f} mN m (steady: {frozen['steady']}, "
           f"{frozen['runtime_s'] / 60:.0f} min)" + ("" if done else "; the released runs are not finished"))
@@ -201,8 +203,8 @@ def main(argv: list[str] | None = None) -> int:
               f"{1e3 * r['frozen_run_on_Nm']:.2f}: {100 * r['moving_vs_frozen_run_on']:+.1f} %")
     if last_rev is not None:
         print(f"last cage revolution: moving mesh {100 * last_rev:+.1f} % against the frozen rotor run on")
-    if rows:
-        lr = _last_revolution(moving_case, control_case, cage_rev_s)
+    if by_body is not None:
+        lr = by_body
         print(f"last cage revolution ({lr['from_s']:.3f}-{lr['to_s']:.3f} s), mean and amplitude at the roller "
               f"pass ({lr['roller_pass_hz']:.0f} Hz), moving mesh | frozen run on, mN m:")
         for name, m in lr["moving_mesh"].items():

@@ -109,8 +109,8 @@ def _reference_run(case: Path, end_time_s: float, speed_rpm: float) -> None:
 
 def main(argv: list[str]) -> int:
     from kegel.cfd_cases import run as runner
-    from kegel.cfd_cases.run import _SteadyMonitor, loss_torque_series, steady_min_time_s
-    from kegel.cfd_cases.steady import first_steady_time, window_means
+    from kegel.cfd_cases.run import loss_torque_series, replay_oil_bath_steady_test, steady_min_time_s
+    from kegel.cfd_cases.steady import window_means
     from kegel.io import atomic_write_json, provenance
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -145,15 +145,15 @@ def main(argv: list[str]) -> int:
                runner.STEADY_HOLD_WINDOWS, runner.STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST)
     for revs, tol, hold, min_revs in VARIANTS:
         w = revs * rev
-        step = w / _SteadyMonitor.CHECK_PER_WINDOW  # the runner's check points
-        ts = first_steady_time(t, loss, w, tol, min_time=min_revs * rev, hold=hold * w,
-                               check_times=step * np.arange(1, math.floor(t[-1] / step) + 1))
+        stop = replay_oil_bath_steady_test(t, loss, meta["kinematics"]["cage_rad_s"], window_cage_revolutions=revs,
+                                           tol=tol, hold_windows=hold, min_cage_revolutions=min_revs)
+        ts = None if stop is None else stop[0]
         row = {"window_cage_revolutions": revs, "window_s": w, "tolerance": tol, "hold_windows": hold,
                "min_cage_revolutions_from_rest": min_revs, "runners_rule": (revs, tol, hold, min_revs) == runners,
                "stop_time_s": ts}
-        if ts is not None:
+        if stop is not None:
+            last = stop[1]
             k = t <= ts
-            last = float(window_means(t[k], loss[k], w, 1)[0])
             three = float(window_means(t[k], loss[k], 3 * w, 1)[0])
             row.update({"wall_time_s": float(np.interp(ts, t_log, clock)), "loss_last_window_Nm": last,
                         "loss_three_windows_Nm": three, "deviation_last_window": last / reference - 1,

@@ -55,11 +55,11 @@ from .geometry import (CELLS_ACROSS_GAP, CELLS_ACROSS_GAP_RANGE, CLEARANCE_RATIO
                        CfdGeometry, build_mesh,
                        cfd_geometry, roller_name)
 from .mesh import MeshQuality, check_mesh, gmsh_to_foam
-from .steady import SteadyTest, drift_of_means, steady_drift, window_means
+from .steady import SteadyTest, drift_of_means, first_steady_time, steady_drift, window_means
 from .template import render_case
 
 __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
-           "loss_torque_series"]
+           "loss_torque_series", "replay_oil_bath_steady_test"]
 
 #: the oil's initial velocity, a rigid rotation at this fraction of the cage's speed (absolute
 #: frame). The oil bath starts from (nearly) rest: its start-up is part of the transient the
@@ -285,6 +285,30 @@ STEADY_HOLD_WINDOWS = 0.5
 def steady_min_time_s(cage_rad_s: float) -> float:
     """Simulated time from rest before the oil bath's steady test applies (see above)."""
     return STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST * 2 * math.pi / abs(cage_rad_s)
+
+
+def replay_oil_bath_steady_test(t: np.ndarray, loss: np.ndarray, cage_rad_s: float, *,
+                                window_cage_revolutions: float | None = None, tol: float | None = None,
+                                hold_windows: float | None = None,
+                                min_cage_revolutions: float | None = None) -> tuple[float, float] | None:
+    """Where the oil bath's steady test would stop a recorded run (``t`` from rest, ``loss`` the
+    loss torque at the shaft), at the runner's check points (every window /
+    ``_SteadyMonitor.CHECK_PER_WINDOW``), and the loss it would report there (the mean over the
+    last window); None if it never passes. Each setting defaults to the runner's rule
+    (:data:`STEADY_WINDOW_CAGE_REVOLUTIONS`, ``CfdPoint.steady_tolerance``,
+    :data:`STEADY_HOLD_WINDOWS`, :data:`STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST`)."""
+    rev = 2 * math.pi / abs(cage_rad_s)
+    w = (STEADY_WINDOW_CAGE_REVOLUTIONS if window_cage_revolutions is None else window_cage_revolutions) * rev
+    tol = CfdPoint.steady_tolerance if tol is None else tol
+    hold = STEADY_HOLD_WINDOWS if hold_windows is None else hold_windows
+    min_revs = STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST if min_cage_revolutions is None else min_cage_revolutions
+    step = w / _SteadyMonitor.CHECK_PER_WINDOW
+    ts = first_steady_time(t, loss, w, tol, min_time=min_revs * rev, hold=hold * w,
+                           check_times=step * np.arange(1, math.floor(t[-1] / step) + 1))
+    if ts is None:
+        return None
+    k = t <= ts
+    return ts, float(window_means(t[k], loss[k], w, 1)[0])
 
 
 def _differing_settings(stored: dict[str, Any], point: CfdPoint, ignore: tuple[str, ...],

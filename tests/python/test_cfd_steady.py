@@ -560,26 +560,22 @@ def test_a_force_line_cut_by_a_kill_is_dropped_and_a_bad_whole_line_is_an_error(
         read_forces(tmp_path, "forces_x")
 
 
-def _stop_on_recorded_run(stem: str, window_rev: float, tol: float, hold_windows: float, min_rev: float):
-    """Replay a steady rule on a recorded oil-bath loss series (benchmarks/cfd_oil_bath_stop_rule.py
-    writes it: the run from rest to 10.5 cage revolutions without a stop). Returns the stop time,
-    the last window's mean there and the long-time mean (the last three cage revolutions), in
-    cage revolutions and N m."""
-    from kegel.cfd_cases.run import _SteadyMonitor
+def _stop_on_recorded_run(stem: str, **rule):
+    """Replay a steady rule (the runner's, or the settings given) on a recorded oil-bath loss
+    series (benchmarks/cfd_oil_bath_stop_rule.py writes it: the run from rest to 10.5 cage
+    revolutions without a stop). Returns the stop time in cage revolutions, the last window's
+    mean there and the long-time mean (the last three cage revolutions), in N m."""
+    from kegel.cfd_cases.run import replay_oil_bath_steady_test
 
     root = Path(__file__).resolve().parents[2] / "benchmarks" / "results"
     rev = json.loads((root / f"{stem}.json").read_text())["cage_revolution_s"]
     data = np.loadtxt(root / f"{stem}_series.csv", delimiter=",", skiprows=2)
     t, loss = data[:, 0], data[:, 1]
-    w = window_rev * rev
-    step = w / _SteadyMonitor.CHECK_PER_WINDOW  # the runner's check points
-    ts = first_steady_time(t, loss, w, tol, min_time=min_rev * rev, hold=hold_windows * w,
-                           check_times=step * np.arange(1, math.floor(t[-1] / step) + 1))
     reference = float(window_means(t, loss, 3 * rev, 1)[0])
-    if ts is None:
+    stop = replay_oil_bath_steady_test(t, loss, 2 * math.pi / rev, **rule)
+    if stop is None:
         return None, None, reference
-    k = t <= ts
-    return ts / rev, float(window_means(t[k], loss[k], w, 1)[0]), reference
+    return stop[0] / rev, stop[1], reference
 
 
 def test_the_runners_oil_bath_rule_stops_near_the_long_time_mean_of_a_recorded_run():
@@ -588,13 +584,10 @@ def test_the_runners_oil_bath_rule_stops_near_the_long_time_mean_of_a_recorded_r
     within 30.7-31.6 mN m (docs/cfd.md, "Oil bath: how steady"). The runner's rule must stop after
     the rise and within 2 % of the long-time mean (it gave +0.2 %); the rule it replaced stopped on
     the plateau, 11.8 % low. (This run chose the rule; the check at another speed is Open.)"""
-    from kegel.cfd_cases import run as runner
-
-    rule = (runner.STEADY_WINDOW_CAGE_REVOLUTIONS, runner.CfdPoint.steady_tolerance, runner.STEADY_HOLD_WINDOWS,
-            runner.STEADY_MIN_CAGE_REVOLUTIONS_FROM_REST)
-    stop_rev, last, reference = _stop_on_recorded_run("cfd_oil_bath_stop_rule", *rule)
+    stop_rev, last, reference = _stop_on_recorded_run("cfd_oil_bath_stop_rule")  # the runner's rule
     assert reference == pytest.approx(30.95e-3, rel=1e-3)
     assert stop_rev is not None and stop_rev >= 5.0
     assert last == pytest.approx(reference, rel=0.02)
-    stop_old, last_old, _ = _stop_on_recorded_run("cfd_oil_bath_stop_rule", 0.5, 0.02, 0.0, 3.0)
+    stop_old, last_old, _ = _stop_on_recorded_run("cfd_oil_bath_stop_rule", window_cage_revolutions=0.5, tol=0.02,
+                                                  hold_windows=0.0, min_cage_revolutions=3.0)
     assert stop_old < 3.1 and last_old / reference - 1 == pytest.approx(-0.118, abs=0.005)
