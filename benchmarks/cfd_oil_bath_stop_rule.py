@@ -109,7 +109,8 @@ def _reference_run(case: Path, end_time_s: float, speed_rpm: float) -> None:
 
 def main(argv: list[str]) -> int:
     from kegel.cfd_cases import run as runner
-    from kegel.cfd_cases.run import loss_torque_series, replay_oil_bath_steady_test, steady_min_time_s
+    from kegel.cfd_cases.run import (fluid_gravity_torque, loss_torque_series, replay_oil_bath_steady_test,
+                                     steady_min_time_s, wall_torque_series)
     from kegel.cfd_cases.steady import window_means
     from kegel.io import atomic_write_json, provenance
 
@@ -127,13 +128,18 @@ def main(argv: list[str]) -> int:
         _reference_run(case, args.end_time, args.speed)
         meta = json.loads((case / "kegel-case.json").read_text())
         t, loss = loss_torque_series(case, meta)
+        t_walls, walls = wall_torque_series(case, meta)
         t_log, clock = clock_of_time(case)
         result = json.loads((case / "results.json").read_text())
+        rev = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
+        span_s = args.reference_revolutions * rev
+        # the weight's moment over the reference span, from the states written there (the
+        # runner keeps the last few): the wall torques' balance leaves it over in a steady state
+        weight = fluid_gravity_torque(case, meta, (t[-1] - span_s, t[-1]), int(result["fidelity"]["n_procs"]))
     finally:
         if not args.work:
             shutil.rmtree(work, ignore_errors=True)
-    rev = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
-    span = args.reference_revolutions * rev
+    span = span_s
     if t[-1] - t[0] < span + steady_min_time_s(meta["kinematics"]["cage_rad_s"]):
         raise SystemExit(f"{case}: the run ends at {t[-1]:.3f} s, too short for a reference over "
                          f"{args.reference_revolutions:g} cage revolutions after the steady test's minimum time")
@@ -160,6 +166,16 @@ def main(argv: list[str]) -> int:
                         "deviation_three_windows": three / reference - 1,
                         "stopped_within_reference_span": bool(ts > t[-1] - span)})
         rows.append(row)
+    # the angular-momentum balance per whole cage revolution from rest: each wall's torque about
+    # the axis (N m), their sum and the sum less the weight's moment over the drive torque
+    balance = []
+    for k in range(int(t_walls[-1] / rev)):
+        m = (t_walls >= k * rev) & (t_walls < (k + 1) * rev)
+        means = {name: float(v[m].mean()) for name, v in walls.items()}
+        total = sum(means.values())
+        drive = abs(means["inner_ring"] + means["shaft"])
+        balance.append({"revolution": k + 1, "walls_Nm": means, "sum_Nm": total,
+                        "relative_to_drive_torque": (total - (weight["torque_Nm"] or 0.0)) / drive})
     out = HERE / "results"
     out.mkdir(exist_ok=True)
     report = {"command": " ".join(["benchmarks/cfd_oil_bath_stop_rule.py", *argv]),
@@ -168,7 +184,8 @@ def main(argv: list[str]) -> int:
               "wall_time_s": float(clock[-1]) if len(clock) else None, "cage_revolution_s": rev,
               "reference_revolutions": args.reference_revolutions, "reference_loss_Nm": reference,
               "reference_per_revolution_means_Nm": [float(x) for x in per_rev],
-              "min_time_from_rest_s": min_time, "rows": rows, "case": str(case),
+              "min_time_from_rest_s": min_time, "rows": rows,
+              "weight_moment_reference_span": weight, "balance_per_revolution": balance, "case": str(case),
               "provenance": provenance()}
     stem = "cfd_oil_bath_stop_rule" + ("" if args.speed == 2000.0 else f"_{args.speed:g}rpm")
     atomic_write_json(out / f"{stem}.json", report)
@@ -195,6 +212,13 @@ def main(argv: list[str]) -> int:
         print(head + f"{r['stop_time_s']:>10.3f}{r['wall_time_s']:>8.0f}"
               f"{1e3 * r['loss_last_window_Nm']:>12.2f}{100 * r['deviation_last_window']:>+7.1f}%"
               f"{1e3 * r['loss_three_windows_Nm']:>11.2f}{100 * r['deviation_three_windows']:>+7.1f}%" + mark)
+    print("wall torques about the axis per cage revolution [mN m] (weight's moment over the reference span: "
+          + ("?" if weight["torque_Nm"] is None else f"{1e3 * weight['torque_Nm']:+.2f}") + " mN m)")
+    names = list(walls)
+    print("rev " + "".join(f"{n[:12]:>13}" for n in names) + f"{'sum':>9}{'balance':>9}")
+    for b in balance:
+        print(f"{b['revolution']:>3} " + "".join(f"{1e3 * b['walls_Nm'][n]:>13.3f}" for n in names)
+              + f"{1e3 * b['sum_Nm']:>9.3f}{100 * b['relative_to_drive_torque']:>+8.1f}%")
     return 0
 
 

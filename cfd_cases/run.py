@@ -59,7 +59,7 @@ from .steady import SteadyTest, drift_of_means, first_steady_time, steady_drift,
 from .template import render_case
 
 __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
-           "loss_torque_series", "replay_oil_bath_steady_test"]
+           "loss_torque_series", "replay_oil_bath_steady_test", "wall_torque_series"]
 
 #: the oil's initial velocity, a rigid rotation at this fraction of the cage's speed (absolute
 #: frame). The oil bath starts from (nearly) rest: its start-up is part of the transient the
@@ -76,6 +76,9 @@ FLOODED_INITIAL_ROTATION_FRACTION = 1.0
 FRAMES = ("cage", "absolute", "moving_mesh")
 AIR_DENSITY_KG_M3 = 1.2          # at 20-50 degC, 1 bar
 AIR_KINEMATIC_VISCOSITY_M2_S = 1.6e-5
+#: the walls (besides the rollers) whose torques about the bearing axis close the angular-momentum
+#: balance
+BALANCE_WALLS = ("inner_ring", "shaft", "outer_ring", "housing", "cage")
 OIL_AIR_SURFACE_TENSION_N_M = 0.03  # mineral oil against air, typical 0.03 N/m (e.g. Totten, Handbook of Lubrication)
 
 
@@ -741,7 +744,7 @@ class _SteadyMonitor:
     state (:func:`_restart_state`).
     """
 
-    BODIES = ("inner_ring", "shaft", "outer_ring", "housing", "cage")
+    BODIES = BALANCE_WALLS
     CHECK_ITERATIONS = 10
     CHECK_PER_WINDOW = 20
 
@@ -866,7 +869,7 @@ class _SteadyMonitor:
         torque| (inner ring and shaft); None when a force file is missing or too short. The
         sector's periodic sides carry no net angular momentum, so its ratio is the bearing's."""
         try:
-            bodies = [_forces(self.case, b) for b in ("inner_ring", "shaft", "outer_ring", "housing", "cage")]
+            bodies = [_forces(self.case, b) for b in BALANCE_WALLS]
             rollers = [(_forces(self.case, r["name"]), np.array(r["centre_m"]))
                        for r in (self.meta or {}).get("rollers", [])]
         except (FoamError, OSError):
@@ -956,6 +959,20 @@ def rollers_about_axis(case: Path, meta: dict, t: np.ndarray) -> np.ndarray:
         mz = np.cross(np.array(r["centre_m"]), f.force_total)[:, 2] + f.moment_total[:, 2]
         out += np.interp(t, f.time, mz)
     return out
+
+
+def wall_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """Every wall's torque about the bearing axis from the oil over time (N m, at the inner
+    ring's sample times): the rings, shaft, housing and cage, and the rollers' orbit moments
+    summed (``rollers_about_bearing_axis``). In a steady state their sum is the moment of the
+    fluid's weight (zero without gravity); see :func:`_balance`."""
+    t = read_forces(case, "forces_inner_ring").time
+    out = {}
+    for name in BALANCE_WALLS:
+        f = _forces(case, name)
+        out[name] = np.interp(t, f.time, f.moment_total[:, 2])
+    out["rollers_about_bearing_axis"] = rollers_about_axis(case, meta, t)
+    return t, out
 
 
 def loss_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, np.ndarray]:
@@ -1134,8 +1151,7 @@ def _balance(t: dict[str, dict[str, float]], gravity: dict[str, Any] | None = No
     side: 32208, 500 rpm, tiny mesh, its centre of mass 5-6 mm off the axis, +2 mN m, as large as
     the drive torque). ``relative_to_drive_torque`` is (sum of wall torques - weight's moment) /
     |drive torque|."""
-    total = sum(t[k]["total"] for k in ("inner_ring", "shaft", "outer_ring", "housing", "cage",
-                                        "rollers_about_bearing_axis"))
+    total = sum(t[k]["total"] for k in (*BALANCE_WALLS, "rollers_about_bearing_axis"))
     drive = abs(t["inner_ring"]["total"] + t["shaft"]["total"])
     weight = 0.0 if gravity is None else gravity["torque_Nm"]
     out: dict[str, Any] = {"sum_of_wall_torques_Nm": total}

@@ -471,6 +471,16 @@ def test_tiny_oil_bath_case_runs_with_conserved_oil(tiny_bath):
     assert bal["weight_moment_states_s"] == [pytest.approx(3e-4)] and math.isfinite(bal["weight_moment_on_fluid_Nm"])
     # the oil still lies level: its weight's moment is that of a centre of mass within 0.5 mm of the axis
     assert abs(bal["weight_moment_on_fluid_Nm"]) < 0.034 * 9.81 * 0.5e-3
+    # every wall's torque series (kegel.cfd_cases.run.wall_torque_series), averaged over the
+    # result's window, is the torque results.json gives, and they sum to the balance's sum
+    from kegel.cfd_cases.run import wall_torque_series
+
+    ts, walls = wall_torque_series(case, json.loads((case / "kegel-case.json").read_text()))
+    lo, hi = data["averaging_window"]
+    sel = (ts >= lo) & (ts <= hi)
+    means = {name: float(v[sel].mean()) for name, v in walls.items()}
+    assert means == pytest.approx({name: t[name]["total"] for name in walls}, rel=1e-9, abs=1e-15)
+    assert sum(means.values()) == pytest.approx(bal["sum_of_wall_torques_Nm"], rel=1e-9)
     for name in ("torque_history", "oil_distribution"):
         assert (case / f"{name}.png").stat().st_size > 10_000
     assert data["liebrecht_Nm"]["total_Nm"] > 0
