@@ -583,7 +583,7 @@ def test_the_runners_oil_bath_rule_stops_near_the_long_time_mean_of_a_recorded_r
     loss holds on a plateau from 2.0 to 3.5 revolutions, rises by 14 % up to 5 and then stays
     within 30.7-31.6 mN m (docs/cfd.md, "Oil bath: how steady"). The runner's rule must stop after
     the rise and within 2 % of the long-time mean (it gave +0.2 %); the rule it replaced stopped on
-    the plateau, 11.8 % low. (This run chose the rule; the check at another speed is Open.)"""
+    the plateau, 11.8 % low. (This run chose the rule; the next test checks it at another speed.)"""
     stop_rev, last, reference = _stop_on_recorded_run("cfd_oil_bath_stop_rule")  # the runner's rule
     assert reference == pytest.approx(30.95e-3, rel=1e-3)
     assert stop_rev is not None and stop_rev >= 5.0
@@ -591,3 +591,18 @@ def test_the_runners_oil_bath_rule_stops_near_the_long_time_mean_of_a_recorded_r
     stop_old, last_old, _ = _stop_on_recorded_run("cfd_oil_bath_stop_rule", window_cage_revolutions=0.5, tol=0.02,
                                                   hold_windows=0.0, min_cage_revolutions=3.0)
     assert stop_old < 3.1 and last_old / reference - 1 == pytest.approx(-0.118, abs=0.005)
+
+
+def test_the_runners_oil_bath_rule_on_a_run_it_was_not_chosen_on():
+    """The check of the rule on another point: the shaft-centre 32208 at 4000 rpm with the real
+    rollers, stopped by the runner's rule (the shipped point) and run on to 10.5 cage revolutions
+    (docs/cfd.md, "Oil bath: how steady"). The tolerance, 3 %, was set before the run: the 2 % of
+    the chosen run plus 1 % for a point the rule was not chosen on."""
+    stop_rev, last, reference = _stop_on_recorded_run("cfd_oil_bath_stop_rule_4000rpm")  # the runner's rule
+    assert reference == pytest.approx(69.65e-3, rel=1e-3)
+    assert stop_rev is not None and stop_rev >= 5.0
+    assert last == pytest.approx(reference, rel=0.03)  # measured -1.8 %
+    # the rule it replaced stops in the transient here too, 7.4 % low
+    stop_old, last_old, _ = _stop_on_recorded_run("cfd_oil_bath_stop_rule_4000rpm", window_cage_revolutions=0.5,
+                                                  tol=0.02, hold_windows=0.0, min_cage_revolutions=3.0)
+    assert stop_old < 3.1 and last_old / reference - 1 == pytest.approx(-0.074, abs=0.005)
