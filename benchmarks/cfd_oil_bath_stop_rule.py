@@ -175,7 +175,8 @@ def main(argv: list[str]) -> int:
         total = sum(means.values())
         drive = abs(means["inner_ring"] + means["shaft"])
         balance.append({"revolution": k + 1, "walls_Nm": means, "sum_Nm": total,
-                        "relative_to_drive_torque": (total - (weight["torque_Nm"] or 0.0)) / drive})
+                        "relative_to_drive_torque": None if weight["torque_Nm"] is None
+                        else (total - weight["torque_Nm"]) / drive})
     out = HERE / "results"
     out.mkdir(exist_ok=True)
     report = {"command": " ".join(["benchmarks/cfd_oil_bath_stop_rule.py", *argv]),
@@ -218,7 +219,8 @@ def main(argv: list[str]) -> int:
     print("rev " + "".join(f"{n[:12]:>13}" for n in names) + f"{'sum':>9}{'balance':>9}")
     for b in balance:
         print(f"{b['revolution']:>3} " + "".join(f"{1e3 * b['walls_Nm'][n]:>13.3f}" for n in names)
-              + f"{1e3 * b['sum_Nm']:>9.3f}{100 * b['relative_to_drive_torque']:>+8.1f}%")
+              + f"{1e3 * b['sum_Nm']:>9.3f}" + ("        ?" if b["relative_to_drive_torque"] is None
+                                                  else f"{100 * b['relative_to_drive_torque']:>+8.1f}%"))
     return 0
 
 

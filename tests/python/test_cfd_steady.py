@@ -595,7 +595,7 @@ def test_the_runners_oil_bath_rule_stops_near_the_long_time_mean_of_a_recorded_r
 
 def test_the_runners_oil_bath_rule_on_a_run_it_was_not_chosen_on():
     """The check of the rule on another point: the shaft-centre 32208 at 4000 rpm with the real
-    rollers, stopped by the runner's rule (the shipped point) and run on to 10.5 cage revolutions
+    rollers, stopped by the runner's rule (the remade point) and run on to 10.5 cage revolutions
     (docs/cfd.md, "Oil bath: how steady"). The tolerance, 3 %, was set before the run: the 2 % of
     the chosen run plus 1 % for a point the rule was not chosen on."""
     stop_rev, last, reference = _stop_on_recorded_run("cfd_oil_bath_stop_rule_4000rpm")  # the runner's rule
