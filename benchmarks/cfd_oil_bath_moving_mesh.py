@@ -118,7 +118,8 @@ def _last_revolution(moving: Path, control: Path, rev_s: float) -> dict:
     rollers pass nothing, so its amplitude there is the noise floor."""
     import numpy as np
 
-    from kegel.cfd_cases.run import BALANCE_WALLS, fluid_gravity_torque, loss_torque_series, wall_torque_series
+    from kegel.cfd_cases.run import (BALANCE_WALLS, angular_momentum_balance, fluid_gravity_torque,
+                                     loss_torque_series, wall_torque_series)
 
     out: dict = {}
     metas = {c: json.loads((c / "kegel-case.json").read_text()) for c in (moving, control)}
@@ -131,22 +132,18 @@ def _last_revolution(moving: Path, control: Path, rev_s: float) -> dict:
         t, loss = losses[case]
         k = (t > t_end - rev_s) & (t <= t_end)
         tk = t[k]
-        t_walls, walls = wall_torque_series(case, meta)
-        series = {"loss_torque_at_shaft": loss[k],
-                  "rollers_about_axis": np.interp(tk, t_walls, walls["rollers_about_bearing_axis"])}
+        _, walls = wall_torque_series(case, meta)  # at the same (inner ring's) sample times as the loss
+        series = {"loss_torque_at_shaft": loss[k], "rollers_about_axis": walls["rollers_about_bearing_axis"][k]}
         for body in BALANCE_WALLS:
-            series[body] = np.interp(tk, t_walls, walls[body])
+            series[body] = walls[body][k]
         out[label] = {name: {"mean_Nm": float(np.mean(y)), "roller_pass_amplitude_Nm": _harmonic_amplitude(tk, y, f_pass),
                              "std_Nm": float(np.std(y))} for name, y in series.items()}
         # the angular-momentum balance over the revolution: the frozen rotor's MRF term is the
         # difference between the two runs' equations
-        total = sum(out[label][b]["mean_Nm"] for b in (*BALANCE_WALLS, "rollers_about_axis"))
-        drive = abs(out[label]["inner_ring"]["mean_Nm"] + out[label]["shaft"]["mean_Nm"])
         n_procs = int(json.loads((case / "results.json").read_text())["fidelity"]["n_procs"])
-        weight = fluid_gravity_torque(case, meta, (t_end - rev_s, t_end), n_procs)
-        out.setdefault("balance", {})[label] = {
-            "sum_of_wall_torques_Nm": total, "weight_moment": weight,
-            "relative_to_drive_torque": None if weight["torque_Nm"] is None else (total - weight["torque_Nm"]) / drive}
+        out.setdefault("balance", {})[label] = angular_momentum_balance(
+            {name: {"total": float(np.mean(walls[name][k]))} for name in walls},
+            fluid_gravity_torque(case, meta, (t_end - rev_s, t_end), n_procs))
     out.update({"from_s": t_end - rev_s, "to_s": t_end, "roller_pass_hz": f_pass, "rollers": z})
     return out
 
@@ -224,7 +221,7 @@ def main(argv: list[str] | None = None) -> int:
         for label, b in lr["balance"].items():
             rel = b["relative_to_drive_torque"]
             print(f"  balance, {label}: walls sum to {1e3 * b['sum_of_wall_torques_Nm']:+.3f} mN m, weight's moment "
-                  + ("?" if b["weight_moment"]["torque_Nm"] is None else f"{1e3 * b['weight_moment']['torque_Nm']:+.3f}")
+                  + ("?" if b["weight_moment_on_fluid_Nm"] is None else f"{1e3 * b['weight_moment_on_fluid_Nm']:+.3f}")
                   + " mN m: " + ("?" if rel is None else f"{100 * rel:+.1f} % of the drive torque"))
     if moving is None:
         return 0

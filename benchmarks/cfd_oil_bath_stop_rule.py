@@ -109,8 +109,8 @@ def _reference_run(case: Path, end_time_s: float, speed_rpm: float) -> None:
 
 def main(argv: list[str]) -> int:
     from kegel.cfd_cases import run as runner
-    from kegel.cfd_cases.run import (fluid_gravity_torque, loss_torque_series, replay_oil_bath_steady_test,
-                                     steady_min_time_s, wall_torque_series)
+    from kegel.cfd_cases.run import (angular_momentum_balance, fluid_gravity_torque, loss_torque_series,
+                                     replay_oil_bath_steady_test, steady_min_time_s, wall_torque_series)
     from kegel.cfd_cases.steady import window_means
     from kegel.io import atomic_write_json, provenance
 
@@ -132,14 +132,13 @@ def main(argv: list[str]) -> int:
         t_log, clock = clock_of_time(case)
         result = json.loads((case / "results.json").read_text())
         rev = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
-        span_s = args.reference_revolutions * rev
+        span = args.reference_revolutions * rev
         # the weight's moment over the reference span, from the states written there (the
         # runner keeps the last few): the wall torques' balance leaves it over in a steady state
-        weight = fluid_gravity_torque(case, meta, (t[-1] - span_s, t[-1]), int(result["fidelity"]["n_procs"]))
+        weight = fluid_gravity_torque(case, meta, (t[-1] - span, t[-1]), int(result["fidelity"]["n_procs"]))
     finally:
         if not args.work:
             shutil.rmtree(work, ignore_errors=True)
-    span = span_s
     if t[-1] - t[0] < span + steady_min_time_s(meta["kinematics"]["cage_rad_s"]):
         raise SystemExit(f"{case}: the run ends at {t[-1]:.3f} s, too short for a reference over "
                          f"{args.reference_revolutions:g} cage revolutions after the steady test's minimum time")
@@ -172,11 +171,9 @@ def main(argv: list[str]) -> int:
     for k in range(int(t_walls[-1] / rev)):
         m = (t_walls >= k * rev) & (t_walls < (k + 1) * rev)
         means = {name: float(v[m].mean()) for name, v in walls.items()}
-        total = sum(means.values())
-        drive = abs(means["inner_ring"] + means["shaft"])
-        balance.append({"revolution": k + 1, "walls_Nm": means, "sum_Nm": total,
-                        "relative_to_drive_torque": None if weight["torque_Nm"] is None
-                        else (total - weight["torque_Nm"]) / drive})
+        bal = angular_momentum_balance({name: {"total": v} for name, v in means.items()}, weight)
+        balance.append({"revolution": k + 1, "walls_Nm": means, "sum_of_wall_torques_Nm": bal["sum_of_wall_torques_Nm"],
+                        "relative_to_drive_torque": bal["relative_to_drive_torque"]})
     out = HERE / "results"
     out.mkdir(exist_ok=True)
     report = {"command": " ".join(["benchmarks/cfd_oil_bath_stop_rule.py", *argv]),
@@ -219,7 +216,7 @@ def main(argv: list[str]) -> int:
     print("rev " + "".join(f"{n[:12]:>13}" for n in names) + f"{'sum':>9}{'balance':>9}")
     for b in balance:
         print(f"{b['revolution']:>3} " + "".join(f"{1e3 * b['walls_Nm'][n]:>13.3f}" for n in names)
-              + f"{1e3 * b['sum_Nm']:>9.3f}" + ("        ?" if b["relative_to_drive_torque"] is None
+              + f"{1e3 * b['sum_of_wall_torques_Nm']:>9.3f}" + ("        ?" if b["relative_to_drive_torque"] is None
                                                   else f"{100 * b['relative_to_drive_torque']:>+8.1f}%"))
     return 0
 

@@ -59,7 +59,7 @@ from .steady import SteadyTest, drift_of_means, first_steady_time, steady_drift,
 from .template import render_case
 
 __all__ = ["CfdPoint", "CfdResult", "prepare_case", "run_case", "roller_wall_rotation", "kinematics",
-           "loss_torque_series", "replay_oil_bath_steady_test", "wall_torque_series"]
+           "loss_torque_series", "replay_oil_bath_steady_test", "wall_torque_series", "angular_momentum_balance"]
 
 #: the oil's initial velocity, a rigid rotation at this fraction of the cage's speed (absolute
 #: frame). The oil bath starts from (nearly) rest: its start-up is part of the transient the
@@ -965,7 +965,7 @@ def wall_torque_series(case: Path, meta: dict) -> tuple[np.ndarray, dict[str, np
     """Every wall's torque about the bearing axis from the oil over time (N m, at the inner
     ring's sample times): the rings, shaft, housing and cage, and the rollers' orbit moments
     summed (``rollers_about_bearing_axis``). In a steady state their sum is the moment of the
-    fluid's weight (zero without gravity); see :func:`_balance`."""
+    fluid's weight (zero without gravity); see :func:`angular_momentum_balance`."""
     t = read_forces(case, "forces_inner_ring").time
     out = {}
     for name in BALANCE_WALLS:
@@ -1058,7 +1058,7 @@ def run_case(point: CfdPoint, case_dir: str | Path, *, log: Callable[[str], None
            **({} if restart is None else {"restart_state_time_s": restart}),
            "simulated_time_s" if not point.flooded else "iterations": result.simulated_time,
            "rollers": result.rollers, "cage": result.cage, "liquid_volume": result.liquid_volume,
-           "angular_momentum_balance": _balance(result.torques_Nm, None if point.flooded else
+           "angular_momentum_balance": angular_momentum_balance(result.torques_Nm, None if point.flooded else
                                                 fluid_gravity_torque(case, meta, result.window_s, point.n_procs)),
            **({} if point.flooded else {"loss_torque_drift": _drift_json(
                case, meta, window, until=monitor.window[1] if monitor.window is not None else None)}),
@@ -1144,7 +1144,7 @@ def _restart_state(case: Path, n_procs: int, stop_s: float) -> float | None:
     return float(found.name)
 
 
-def _balance(t: dict[str, dict[str, float]], gravity: dict[str, Any] | None = None) -> dict[str, Any]:
+def angular_momentum_balance(t: dict[str, dict[str, float]], gravity: dict[str, Any] | None = None) -> dict[str, Any]:
     """The angular-momentum balance about the bearing axis. In a steady state the oil's angular
     momentum is constant, so the torques the walls take from the oil sum to the moment of the
     fluid's weight (zero without gravity, flooded; in an oil bath the flow holds the oil up on one

@@ -160,7 +160,7 @@ def test_the_angular_momentum_balance_counts_the_weight_of_an_oil_bath():
     """In an oil bath the walls' torques sum to the moment of the oil's weight, not to zero (the
     flow holds the oil up on one side): the balance subtracts it; an oil-bath result that does not
     state it has no balance (never a false alarm), a flooded one needs none."""
-    from kegel.cfd_cases.run import _balance
+    from kegel.cfd_cases.run import angular_momentum_balance as _balance
     from kegel.coupling.cfd_results import balance_of
 
     t = {k: {"total": v} for k, v in (("inner_ring", -1.5e-3), ("shaft", -0.5e-3), ("outer_ring", 2.5e-3),
