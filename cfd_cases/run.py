@@ -876,12 +876,14 @@ class _SteadyMonitor:
             return None
         if not rollers or any(len(f.time) < hi for f in bodies) or any(len(f.time) < hi for f, _ in rollers):
             return None
-        total = sum(float(f.moment_total[lo:hi, 2].mean()) for f in bodies)
+        t = {b: {"total": float(f.moment_total[lo:hi, 2].mean())} for b, f in zip(BALANCE_WALLS, bodies)}
+        orbit = 0.0
         for f, c in rollers:
             F, M = f.force_total[lo:hi].mean(axis=0), f.moment_total[lo:hi].mean(axis=0)
-            total += float(np.cross(c, F)[2] + M[2])
-        drive = abs(float(bodies[0].moment_total[lo:hi, 2].mean() + bodies[1].moment_total[lo:hi, 2].mean()))
-        return None if drive == 0.0 else total / drive
+            orbit += float(np.cross(c, F)[2] + M[2])
+        t["rollers_about_bearing_axis"] = {"total": orbit}
+        # no gravity: the flooded monitor's cases have none (results.json's balance has the same formula)
+        return angular_momentum_balance(t)["relative_to_drive_torque"]
 
 
 def _case_meta(case: Path) -> dict[str, Any]:
