@@ -48,6 +48,14 @@ OUT = HERE / "results" / "cfd_oil_bath_real_rollers.json"
 ONE_CELL_FACTOR = 83.99 / 74.03
 
 
+def _shown(path: Path) -> str:
+    """``path`` relative to the repository where it lies inside it."""
+    try:
+        return str(path.relative_to(REPO))
+    except ValueError:
+        return str(path)
+
+
 def main(argv: list[str] | None = None) -> int:
     import argparse
 
@@ -55,9 +63,12 @@ def main(argv: list[str] | None = None) -> int:
 
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--speed", type=float, default=2000.0, help="shaft speed [rpm] of the case (default 2000)")
+    ap.add_argument("--cases", type=Path, default=CASES,
+                    help="folder of the cases (default results/cfd/oilbath_real); a folder that holds only "
+                         "each case's results.json and kegel-case.json will do")
     args = ap.parse_args(argv)
     rpm = args.speed
-    CASE = CASES / f"32208_{rpm:g}rpm_shaft_center_tiny_g0.08"
+    CASE = args.cases.resolve() / f"32208_{rpm:g}rpm_shaft_center_tiny_g0.08"
     data = json.loads((CASE / "results.json").read_text())
     meta = json.loads((CASE / "kegel-case.json").read_text())
     gap_m = meta["geometry"]["gap_m"]
@@ -68,9 +79,9 @@ def main(argv: list[str] | None = None) -> int:
     thin_full = float(flooded["thin_film_loss_Nm"])  # full films
     if data.get("thin_film_loss_Nm") is None:
         raise SystemExit(f"{CASE}/results.json has no oil-bath thin films: evaluate them with "
-                         f"kegel cfd thin-films {CASE.relative_to(REPO)}")
+                         f"kegel cfd thin-films {_shown(CASE)}")
     thin = float(data["thin_film_loss_Nm"])  # the oil bath's: each film times its supply factor
-    row = {"speed_rpm": rpm, "case": str(CASE.relative_to(REPO)), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
+    row = {"speed_rpm": rpm, "case": _shown(CASE), "cells": data["fidelity"]["cells"], "gap_m": gap_m,
            "runtime_s": data["runtime_s"], "simulated_time_s": data.get("simulated_time_s"),
            "stopped_by": data.get("stopped_by"), "steady": data.get("steady"),
            "angular_momentum_balance": (data.get("angular_momentum_balance") or {}).get("relative_to_drive_torque"),
