@@ -163,8 +163,8 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                     warns.append(Warning_("cfd_unbalanced", f"a CFD result used for {row['lubrication']} at "
                                           f"{point['speed_rpm']:.0f} rpm is not in angular-momentum balance: it "
                                           f"misses by {100 * c['balance']:.0f} % of the drive torque "
-                                          f"(settled: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled, "
-                                          "read its loss as unconfirmed"))
+                                          f"(accepted: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled or the "
+                                          "mesh misses the balance more than the shipped cases do: read its loss as unconfirmed"))
             hyd = row.get("hydraulic_torque_Nm")
             row["total_torque_Nm"] = None if hyd is None or cut_failed else row["friction_torque_Nm"] + hyd
             row["warnings"] = [x.as_dict() for x in warns]
