@@ -1,17 +1,18 @@
-"""The three answers at the shaft centre with the real rollers: a first point (issue 29, item 4).
+"""The three answers at the shaft centre with the real rollers (issue 29, item 4).
 
-The 32208, FVA 3 at 50 degC, Fa = 1 kN, 2000 rpm, oil to the shaft centre. The CFD is the whole
+The 32208, FVA 3 at 50 degC, Fa = 1 kN, 500-4000 rpm, oil to the shaft centre. The CFD is the whole
 bearing (gravity and the free surface rule out the flooded sector) with the real rollers at the
 default gap g = 0.08 D_w and the ``tiny`` level's wall size in the gaps (about one cell across
-0.8 mm: 76 k cells; three cells across would need about 1.4 M). Made by
+0.8 mm: 76 k cells; three cells across would need about 1.4 M). Made by, per speed N
 
-    .venv/bin/kegel cfd run --bearing 32208 --speed "2000 rpm" --oil-level shaft_center --mesh tiny --np 2 \\
+    .venv/bin/kegel cfd run --bearing 32208 --speed "N rpm" --oil-level shaft_center --mesh tiny --np 2 \\
         --gap-ratio 0.08 --max-courant 10 --max-interface-courant 3 --max-wall-time "50 min" \\
-        --output results/cfd/oilbath_real/32208_2000rpm_shaft_center_tiny_g0.08
-    .venv/bin/python benchmarks/cfd_oil_bath_real_rollers.py [--speed 2000]
+        --output results/cfd/oilbath_real/32208_Nrpm_shaft_center_tiny_g0.08
+    (its results.json and kegel-case.json copied to benchmarks/results/cfd_oil_bath_runs/<same name>/)
+    .venv/bin/python benchmarks/cfd_oil_bath_real_rollers.py --speed N
 
-(other speeds the same with ``--speed "N rpm"`` and ``32208_Nrpm_...`` in the output folder; the
-JSON keeps one row per speed.)
+(the JSON keeps one row per speed; ``--cases results/cfd/oilbath_real`` reads the case folders
+instead.)
 
 The three totals, as in the flooded table (benchmarks/cfd_three_answers.py): contact cut at g +
 CFD + thin films, uncut contact + Liebrecht, uncut contact + SKF drag; the contacts' supply is the
@@ -41,7 +42,9 @@ sys.path.insert(0, str(REPO))
 
 from cfd_three_answers import correlations_and_contact  # noqa: E402
 
-CASES = REPO / "results" / "cfd" / "oilbath_real"
+#: the runs' results.json and kegel-case.json, kept whole in the repository (the case folders under
+#: results/ are not); its README gives the commands that made them
+CASES = HERE / "results" / "cfd_oil_bath_runs"
 OUT = HERE / "results" / "cfd_oil_bath_real_rollers.json"
 #: flooded 32208 at 2000 rpm, g = 0.08 D_w: the 3-cell sector (83.99 mN m) over the whole bearing
 #: with one cell across each gap (74.03 mN m, the gap study's --check-sector run; docs/cfd.md)
@@ -64,8 +67,8 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--speed", type=float, default=2000.0, help="shaft speed [rpm] of the case (default 2000)")
     ap.add_argument("--cases", type=Path, default=CASES,
-                    help="folder of the cases (default results/cfd/oilbath_real); a folder that holds only "
-                         "each case's results.json and kegel-case.json will do")
+                    help="folder of the cases (default benchmarks/results/cfd_oil_bath_runs, the shipped runs' "
+                         "results.json and kegel-case.json; a case folder of kegel cfd run will do too)")
     args = ap.parse_args(argv)
     rpm = args.speed
     CASE = args.cases.resolve() / f"32208_{rpm:g}rpm_shaft_center_tiny_g0.08"

@@ -98,7 +98,7 @@ def test_bodies_plus_ring_churning_is_the_cfd_loss(b32208, runs, level):
         # the exponents and their residuals are reported; the levels are the point's own
         prov = law.provenance
         assert len(prov["sweep_files"]) == 4 and set(prov["exponents"]) == {"orbit", "spin", "cage"}
-        # (flooded within 15 %; the oil bath's spin fit within 23 %: its free surface moves
+        # (flooded within 15 %; the oil bath's spin fit within 19 %: its free surface moves
         # with the speed, so no single power law holds all four points)
         assert all(0.0 <= r < (0.2 if level == "flooded" else 0.25) for r in prov["max_abs_residual"].values())
 
@@ -119,10 +119,12 @@ def test_the_shipped_sweeps_give_these_exponents(b32208, runs):
     # rollers; the old geometry's shaft-centre cage drag, 0.84, grew more slowly than viscous:
     # the oil the inner ring drags along turns with the cage more as the speed rises)
     assert all(1.0 <= n <= 2.0 for n in got["flooded"].values()), got
-    # oil to the shaft centre, the real rollers at g = 0.08 D_w (the old geometry: 1.72 / 0.99 /
-    # 0.84): spin and cage grow more slowly than a viscous drag, as less of each body is wetted
-    # the faster it turns (the oil flung off; the immersed share of the flooded sweep is 1)
-    assert got["shaft_center"] == pytest.approx({"orbit": 1.23, "spin": 0.91, "cage": 0.78}, abs=0.01)
+    # oil to the shaft centre, the real rollers at g = 0.08 D_w, runs stopped by the present oil-bath
+    # rule (the old rule's runs gave 1.23 / 0.91 / 0.78, the old geometry 1.72 / 0.99 / 0.84):
+    # every drag grows more slowly than flooded, the cage's more slowly than a viscous drag, as
+    # less of each body is wetted the faster it turns (the oil flung off; flooded, all of it is)
+    assert got["shaft_center"] == pytest.approx({"orbit": 1.31, "spin": 1.01, "cage": 0.79}, abs=0.01)
+    assert all(got["shaft_center"][k] < got["flooded"][k] for k in got["flooded"])
 
 
 def _copy_sweep(tmp_path: Path, level: str = "flooded") -> list[Path]:
