@@ -164,6 +164,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
     ap.add_argument("--control-np", type=int,
                     help="MPI processes of the control run (default --np; a resumed run keeps its own)")
+    ap.add_argument("--work", type=Path, default=CASES,
+                    help="folder of the three case folders (default results/cfd/moving_mesh); a finished frozen "
+                         "run copied there as frozen_2000rpm_tiny is the start, not run again")
+    ap.add_argument("--output", type=Path, default=OUT,
+                    help="the JSON written (default benchmarks/results/cfd_oil_bath_moving_mesh.json)")
     ap.add_argument("--no-run", action="store_true",
                     help="run nothing: compare what the case folders hold so far (an unfinished run's force files)")
     args = ap.parse_args(argv)
@@ -171,8 +176,9 @@ def main(argv: list[str] | None = None) -> int:
     def log(s: str) -> None:
         print(s, file=sys.stderr)
 
-    frozen_case, moving_case = CASES / "frozen_2000rpm_tiny", CASES / "moving_2000rpm_tiny"
-    control_case = CASES / "frozen_run_on_2000rpm_tiny"
+    work = args.work.resolve()
+    frozen_case, moving_case = work / "frozen_2000rpm_tiny", work / "moving_2000rpm_tiny"
+    control_case = work / "frozen_run_on_2000rpm_tiny"
     t0 = time.monotonic()
     if not _finished(frozen_case) and not args.no_run:
         run_case(_point("cage", args.np, max_wall_time_s=3600.0), frozen_case, log=log, progress=False)
@@ -192,7 +198,7 @@ def main(argv: list[str] | None = None) -> int:
     last_rev = (sum(r["moving_mesh_Nm"] for r in both) / sum(r["frozen_run_on_Nm"] for r in both) - 1.0
                 if len(both) == 4 else None)
     by_body = _last_revolution(moving_case, control_case, cage_rev_s) if rows else None
-    atomic_write_json(OUT, {
+    atomic_write_json(args.output, {
         "command": " ".join(["benchmarks/cfd_oil_bath_moving_mesh.py", *(sys.argv[1:] if argv is None else argv)]),
         "point": "32208, FVA 3, 50 degC, 2000 rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
                  "Courant 10 / 3",
