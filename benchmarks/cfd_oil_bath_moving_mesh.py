@@ -42,10 +42,10 @@ SPEED_RPM = 2000.0
 OIL_LEVEL_M = 0.04  # the shaft centre of the 32208 (D = 80 mm)
 
 
-def _point(frame: str, n_procs: int, **extra):
+def _point(frame: str, n_procs: int, speed_rpm: float = SPEED_RPM, **extra):
     from kegel.cfd_cases.run import CfdPoint
 
-    return CfdPoint(bearing="32208", speed_rad_s=SPEED_RPM * math.pi / 30, temperature_K=323.15,
+    return CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=323.15,
                     oil_level_m=OIL_LEVEL_M, mesh="tiny", n_procs=n_procs, frame=frame, max_courant=10.0,
                     max_interface_courant=3.0, **extra)
 
@@ -161,12 +161,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--revolutions", type=float, default=2.0,
                     help="cage revolutions the moving mesh (and the control) run after the release (default 2: "
                          "0.143 s at 2000 rpm, about 30 min each on 2 cores alone)")
+    ap.add_argument("--speed", type=float, default=SPEED_RPM, help="shaft speed [rpm] (default 2000)")
     ap.add_argument("--np", type=int, default=2, help="MPI processes (default 2)")
     ap.add_argument("--control-np", type=int,
                     help="MPI processes of the control run (default --np; a resumed run keeps its own)")
     ap.add_argument("--work", type=Path, default=CASES,
                     help="folder of the three case folders (default results/cfd/moving_mesh); a finished frozen "
-                         "run copied there as frozen_2000rpm_tiny is the start, not run again")
+                         "run copied there as frozen_<N>rpm_tiny is the start, not run again")
     ap.add_argument("--output", type=Path, default=OUT,
                     help="the JSON written (default benchmarks/results/cfd_oil_bath_moving_mesh.json)")
     ap.add_argument("--no-run", action="store_true",
@@ -177,18 +178,19 @@ def main(argv: list[str] | None = None) -> int:
         print(s, file=sys.stderr)
 
     work = args.work.resolve()
-    frozen_case, moving_case = work / "frozen_2000rpm_tiny", work / "moving_2000rpm_tiny"
-    control_case = work / "frozen_run_on_2000rpm_tiny"
+    rpm = args.speed
+    frozen_case, moving_case = work / f"frozen_{rpm:g}rpm_tiny", work / f"moving_{rpm:g}rpm_tiny"
+    control_case = work / f"frozen_run_on_{rpm:g}rpm_tiny"
     t0 = time.monotonic()
     if not _finished(frozen_case) and not args.no_run:
-        run_case(_point("cage", args.np, max_wall_time_s=3600.0), frozen_case, log=log, progress=False)
+        run_case(_point("cage", args.np, rpm, max_wall_time_s=3600.0), frozen_case, log=log, progress=False)
     frozen = _summary(frozen_case)
     meta = json.loads((frozen_case / "kegel-case.json").read_text())
     cage_rev_s = 2 * math.pi / abs(meta["kinematics"]["cage_rad_s"])
     end = args.revolutions * cage_rev_s
     for frame, case, n in (("moving_mesh", moving_case, args.np), ("cage", control_case, args.control_np or args.np)):
         if not _finished(case, end) and not args.no_run:
-            run_case(_point(frame, n, initial_from=str(frozen_case), end_time_s=end, steady_tolerance=0.0),
+            run_case(_point(frame, n, rpm, initial_from=str(frozen_case), end_time_s=end, steady_tolerance=0.0),
                      case, log=log, progress=False)
     done = _finished(moving_case) and _finished(control_case)
     moving = _summary(moving_case) if _finished(moving_case) else None
@@ -200,7 +202,7 @@ def main(argv: list[str] | None = None) -> int:
     by_body = _last_revolution(moving_case, control_case, cage_rev_s) if rows else None
     atomic_write_json(args.output, {
         "command": " ".join(["benchmarks/cfd_oil_bath_moving_mesh.py", *(sys.argv[1:] if argv is None else argv)]),
-        "point": "32208, FVA 3, 50 degC, 2000 rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
+        "point": f"32208, FVA 3, 50 degC, {rpm:g} rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
                  "Courant 10 / 3",
         "partial": not done, "released_for_s": rows[-1]["to_s"] if rows else 0.0,
         "cage_revolution_s": cage_rev_s, "frozen_rotor": frozen, "moving_mesh": moving,
