@@ -168,8 +168,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--work", type=Path, default=CASES,
                     help="folder of the three case folders (default results/cfd/moving_mesh); a finished frozen "
                          "run copied there as frozen_<N>rpm_tiny is the start, not run again")
-    ap.add_argument("--output", type=Path, default=OUT,
-                    help="the JSON written (default benchmarks/results/cfd_oil_bath_moving_mesh.json)")
+    ap.add_argument("--output", type=Path,
+                    help="the JSON written (default benchmarks/results/cfd_oil_bath_moving_mesh.json at 2000 rpm, "
+                         "..._<N>rpm.json at another speed, so that no speed overwrites another's)")
     ap.add_argument("--no-run", action="store_true",
                     help="run nothing: compare what the case folders hold so far (an unfinished run's force files)")
     args = ap.parse_args(argv)
@@ -200,7 +201,8 @@ def main(argv: list[str] | None = None) -> int:
     last_rev = (sum(r["moving_mesh_Nm"] for r in both) / sum(r["frozen_run_on_Nm"] for r in both) - 1.0
                 if len(both) == 4 else None)
     by_body = _last_revolution(moving_case, control_case, cage_rev_s) if rows else None
-    atomic_write_json(args.output, {
+    output = args.output or (OUT if rpm == SPEED_RPM else OUT.with_name(f"{OUT.stem}_{rpm:g}rpm.json"))
+    atomic_write_json(output, {
         "command": " ".join(["benchmarks/cfd_oil_bath_moving_mesh.py", *(sys.argv[1:] if argv is None else argv)]),
         "point": f"32208, FVA 3, 50 degC, {rpm:g} rpm, oil to the shaft centre, tiny, real rollers, g = 0.08 D_w, "
                  "Courant 10 / 3",
