@@ -72,6 +72,10 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     rpm = args.speed
     CASE = args.cases.resolve() / f"32208_{rpm:g}rpm_shaft_center_tiny_g0.08"
+    for name in ("results.json", "kegel-case.json"):
+        if not (CASE / name).is_file():
+            raise SystemExit(f"--cases {args.cases}: no {name} in {_shown(CASE)} (expected the run of "
+                             f"{rpm:g} rpm: its kegel cfd run folder, or its two JSON files copied there)")
     data = json.loads((CASE / "results.json").read_text())
     meta = json.loads((CASE / "kegel-case.json").read_text())
     gap_m = meta["geometry"]["gap_m"]
