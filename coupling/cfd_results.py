@@ -19,7 +19,7 @@ from typing import Any
 
 from ..base.errors import KegelInputError
 
-__all__ = ["BALANCE_LIMIT", "balance_of", "cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
+__all__ = ["BALANCE_LIMIT", "balance_of", "is_unbalanced", "unbalanced_reason", "cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
 
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
@@ -38,6 +38,21 @@ DEFAULT_GAP_RATIO = 0.08
 #: the oil is still gaining or losing angular momentum as a whole, or the mesh misses the balance
 #: by more than the shipped cases do.
 BALANCE_LIMIT = 0.25
+
+
+def is_unbalanced(balance: float | None) -> bool:
+    """Whether a CFD result's angular-momentum balance (:func:`balance_of`; None: not stated)
+    misses by more than :data:`BALANCE_LIMIT` of the drive torque, on either side."""
+    return balance is not None and abs(balance) > BALANCE_LIMIT
+
+
+def unbalanced_reason(balance: float) -> str:
+    """The one reading of an unbalanced CFD result, shared by every place that flags it
+    (``kegel run``'s and a study's ``cfd_unbalanced`` warnings, ``kegel losses --cfd``)."""
+    return (f"its wall torques miss the angular-momentum balance by {100 * balance:+.0f} % of the drive torque "
+            f"(accepted: within {100 * BALANCE_LIMIT:.0f} %): either the oil is still gaining or losing angular "
+            "momentum as a whole, or the mesh and the frozen rotor's MRF term miss the balance by more than the "
+            "shipped cases do; read its loss as unconfirmed")
 
 
 def balance_of(data: dict[str, Any]) -> float | None:

@@ -181,15 +181,12 @@ def command(args: argparse.Namespace) -> int:
                   "the unloaded stretch of the lines (it needs the load: kegel run takes it off a flooded result), "
                   "with a correlation (docs/cfd.md, three answers). Shrunk rollers: the old geometry, its level "
                   "set by that gap.")
-        from ..coupling.cfd_results import BALANCE_LIMIT
+        from ..coupling.cfd_results import is_unbalanced, unbalanced_reason
 
-        off = [c for c in cfd_rows if c["angular_momentum_balance"] is not None
-               and abs(c["angular_momentum_balance"]) > BALANCE_LIMIT]
-        for c in off:
-            print(f"  not settled: {c['oil_level']} at {c['speed_rpm']:.0f} rpm, its angular-momentum balance "
-                  f"misses by {100 * c['angular_momentum_balance']:+.0f} % of the drive torque (settled: within "
-                  f"{100 * BALANCE_LIMIT:.0f} %): the oil was still gaining or losing angular momentum; "
-                  "read this loss as unconfirmed")
+        for c in cfd_rows:
+            if is_unbalanced(c["angular_momentum_balance"]):
+                print(f"  unbalanced: {c['oil_level']} at {c['speed_rpm']:.0f} rpm, "
+                      f"{unbalanced_reason(c['angular_momentum_balance'])}")
     elif args.cfd:
         print(f"no CFD result of a {bearing.designation} in {lub.name} at {T - 273.15:g} degC under {', '.join(args.cfd)}")
     if plot_path:

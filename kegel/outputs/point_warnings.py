@@ -38,9 +38,10 @@ Codes
     The CFD result used did not reach a steady loss torque.
 ``cfd_unbalanced``
     The CFD result used is not in angular-momentum balance (its wall torques do not sum to zero
-    within ``kegel.coupling.cfd_results.BALANCE_LIMIT`` of the drive torque): either the oil had
-    not settled, or the mesh misses the balance by more than the shipped cases do; its loss is not
-    confirmed.
+    within ``kegel.coupling.cfd_results.BALANCE_LIMIT`` of the drive torque): either the oil is
+    still gaining or losing angular momentum, or the mesh and the frozen rotor's MRF term miss the
+    balance by more than the shipped cases do; its loss is not confirmed
+    (``kegel.coupling.cfd_results.unbalanced_reason``).
 ``contacts_fully_flooded``
     Minimum-quantity lubrication (a scene's, or a study's case) with fully flooded contacts
     (``model.lubricant_supply = "flooded"`` and no ``model.inlet_gap_ratio``): the contact
@@ -73,7 +74,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, TextIO
 
-from ..coupling.cfd_results import BALANCE_LIMIT as CFD_BALANCE_LIMIT
+from ..coupling.cfd_results import is_unbalanced, unbalanced_reason
 
 __all__ = ["COMPARED_RANGE", "Warning_", "WarningLog", "liebrecht_warning", "point_warnings", "verify_tables",
            "warnings_once_per_command"]
@@ -216,10 +217,8 @@ def point_warnings(scene: Any, point: dict[str, Any], friction: Any = None) -> l
             out.append(Warning_("cfd_not_steady", f"the CFD result {hyd.get('file')} did not reach a steady loss "
                                 "torque"))
         bal = hyd.get("angular_momentum_balance")
-        if bal is not None and abs(bal) > CFD_BALANCE_LIMIT:
-            out.append(Warning_("cfd_unbalanced", f"the CFD result {hyd.get('file')} is not in angular-momentum "
-                                f"balance: it misses by {100 * bal:.0f} % of the drive torque (accepted: "
-                                f"within {100 * CFD_BALANCE_LIMIT:.0f} %); read its loss as unconfirmed"))
+        if is_unbalanced(bal):
+            out.append(Warning_("cfd_unbalanced", f"the CFD result {hyd.get('file')}: {unbalanced_reason(bal)}"))
     elif hyd and scene.lubrication.oil_level_m > 0 and scene.fidelity.hydraulic == "correlation":
         w = liebrecht_warning(scene.bearing.designation,
                               scene.lubrication.oil_level_m >= scene.bearing.outer_diameter_m)

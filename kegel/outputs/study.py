@@ -74,7 +74,7 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
     The minimum-quantity case has no oil bath: one row, method ``none``, hydraulic loss 0.
     """
     from ..coupling import cfd_loss_at
-    from ..coupling.cfd_results import BALANCE_LIMIT
+    from ..coupling.cfd_results import is_unbalanced, unbalanced_reason
 
     st = scene.study
     g = scene.geometry
@@ -159,12 +159,9 @@ def study_rows(scene: Any, point: dict[str, Any], cfd_runs: list[tuple[Path, dic
                 if c["steady"] is False:
                     warns.append(Warning_("cfd_not_steady", f"a CFD result used for {row['lubrication']} did not "
                                           "reach a steady loss torque"))
-                if c["balance"] is not None and c["balance"] > BALANCE_LIMIT:
+                if is_unbalanced(c["balance"]):
                     warns.append(Warning_("cfd_unbalanced", f"a CFD result used for {row['lubrication']} at "
-                                          f"{point['speed_rpm']:.0f} rpm is not in angular-momentum balance: it "
-                                          f"misses by {100 * c['balance']:.0f} % of the drive torque "
-                                          f"(accepted: within {100 * BALANCE_LIMIT:.0f} %); the oil had not settled or the "
-                                          "mesh misses the balance more than the shipped cases do: read its loss as unconfirmed"))
+                                          f"{point['speed_rpm']:.0f} rpm: {unbalanced_reason(c['balance'])}"))
             hyd = row.get("hydraulic_torque_Nm")
             row["total_torque_Nm"] = None if hyd is None or cut_failed else row["friction_torque_Nm"] + hyd
             row["warnings"] = [x.as_dict() for x in warns]

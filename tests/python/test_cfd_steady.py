@@ -606,3 +606,40 @@ def test_the_runners_oil_bath_rule_on_a_run_it_was_not_chosen_on():
     stop_old, last_old, _ = _stop_on_recorded_run("cfd_oil_bath_stop_rule_4000rpm", window_cage_revolutions=0.5,
                                                   tol=0.02, hold_windows=0.0, min_cage_revolutions=3.0)
     assert stop_old < 3.1 and last_old / reference - 1 == pytest.approx(-0.074, abs=0.005)
+
+
+#: The moving-mesh checks over the levelled stretch (docs/cfd.md, "Oil bath: frozen rotor or
+#: moving mesh"; benchmarks/cfd_oil_bath_moving_mesh.py): speed -> the stored JSON.
+MOVING_MESH_LEVELLED = {2000: "cfd_oil_bath_moving_mesh_levelled.json",
+                        4000: "cfd_oil_bath_moving_mesh_levelled_4000rpm.json"}
+
+
+@pytest.mark.parametrize("rpm", sorted(MOVING_MESH_LEVELLED))
+def test_the_moving_mesh_figures_in_the_docs_are_the_stored_checks(rpm):
+    """The moving mesh against the frozen rotor run on, released at five cage revolutions: the
+    figures docs/cfd.md and the README quote (second-revolution losses and their difference, the
+    quarter-revolution range, both balances, the rollers' orbit drag) are those of the stored
+    JSON, and the physics they are quoted for holds: losses within 1 % over the second
+    revolution, quarters within 3.5 %, the moving mesh's balance under half the frozen rotor's."""
+    root = Path(__file__).resolve().parents[2]
+    d = json.loads((root / "benchmarks" / "results" / MOVING_MESH_LEVELLED[rpm]).read_text())
+    assert not d["partial"] and f", {rpm} rpm," in d["point"]
+    b = d["last_revolution_by_body"]
+    assert b["from_s"] == pytest.approx(d["cage_revolution_s"], rel=0.01)  # the second revolution
+    moving, frozen = (1e3 * b[k]["loss_torque_at_shaft"]["mean_Nm"] for k in ("moving_mesh", "frozen_run_on"))
+    diff = d["moving_vs_frozen_run_on_last_revolution"]
+    quarters = [r["moving_vs_frozen_run_on"] for r in d["by_quarter_cage_revolution"]]
+    bal = {k: b["balance"][k]["relative_to_drive_torque"] for k in ("moving_mesh", "frozen_run_on")}
+    orbit = {k: 1e3 * b[k]["rollers_about_axis"]["mean_Nm"] for k in ("moving_mesh", "frozen_run_on")}
+    assert abs(diff) < 0.01 and max(map(abs, quarters)) < 0.035
+    assert abs(bal["moving_mesh"]) < 0.5 * abs(bal["frozen_run_on"])
+    docs = " ".join((root / "docs" / "cfd.md").read_text().split())
+    readme = " ".join((root / "README.md").read_text().split())
+    quoted = [f"{moving:.2f} against", f"{frozen:.2f}", f"{100 * diff:.1f} %",
+              f"{100 * min(quarters):.1f}", f"{100 * max(quarters):+.1f} %",
+              f"+{100 * bal['moving_mesh']:.1f} %", f"+{100 * bal['frozen_run_on']:.1f} %",
+              f"{orbit['moving_mesh']:.2f} against {orbit['frozen_run_on']:.2f} mN m"]
+    for s in quoted:
+        assert s in docs, (rpm, s)
+    for s in (f"+{100 * bal['moving_mesh']:.1f}", f"+{100 * bal['frozen_run_on']:.1f} %"):
+        assert s in readme, (rpm, s)

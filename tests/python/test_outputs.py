@@ -147,13 +147,27 @@ def test_an_unsettled_cfd_result_is_flagged(tmp_path, monkeypatch):
     (tmp_path / "s.toml").write_text(STUDY.replace('"500 rpm", ', ""))
     res = run_kegel("run", "s.toml", "--output", "out", cwd=tmp_path)
     assert res.returncode == 0, res.stderr
-    assert res.stderr.count("[cfd_unbalanced]") == 1 and "81 %" in res.stderr
+    assert res.stderr.count("[cfd_unbalanced]") == 1 and "+81 %" in res.stderr
+    # the shared reading (coupling.cfd_results.unbalanced_reason), not a message of its own
+    assert "frozen rotor's MRF term" in res.stderr.replace("\n", " ")
     data = json.loads((tmp_path / "out" / "results.json").read_text())
     flagged = {(p["speed_rpm"], r["lubrication"]) for p in data["points"] for r in p["study"]
                if any(w["code"] == "cfd_unbalanced" for w in r["warnings"])}
     assert (1000.0, "flooded") in flagged and (2000.0, "flooded") not in flagged
     line = next(x for x in res.stdout.splitlines() if " 1000 " in x and "flooded" in x)
     assert line.rstrip().endswith("!")
+
+
+def test_an_unbalanced_result_is_flagged_on_either_side_with_one_reading():
+    """Beyond BALANCE_LIMIT on either side a result is unbalanced; the reading every place
+    prints states the figure with its sign and the limit."""
+    from kegel.coupling.cfd_results import BALANCE_LIMIT, is_unbalanced, unbalanced_reason
+
+    assert is_unbalanced(-1.01 * BALANCE_LIMIT) and is_unbalanced(1.01 * BALANCE_LIMIT)
+    assert not is_unbalanced(BALANCE_LIMIT) and not is_unbalanced(-0.99 * BALANCE_LIMIT)
+    assert not is_unbalanced(None)
+    r = unbalanced_reason(-0.3)
+    assert "-30 %" in r and f"within {100 * BALANCE_LIMIT:.0f} %" in r and "unconfirmed" in r
 
 
 def test_the_angular_momentum_balance_counts_the_weight_of_an_oil_bath():
