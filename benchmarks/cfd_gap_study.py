@@ -105,20 +105,20 @@ def loads_table(loads_N: list[float]) -> list[dict]:
 
 
 def run_one(gap: float, cells: int, mesh: str, sector: bool, n_procs: int, max_iterations: int = 1500,
-            speed_rpm: float = SPEED_RPM) -> dict:
-    """Run (or resume) one flooded case of the study point at ``speed_rpm`` and copy its
-    results.json into the repository (``STORE``); its row (``cfd_cases.run`` figures)."""
+            speed_rpm: float = SPEED_RPM, cases: Path = CASES, store: Path = STORE) -> dict:
+    """Run (or resume) one flooded case of the study point at ``speed_rpm`` in ``cases`` and copy
+    its results.json into the repository (``store``); its row (``cfd_cases.run`` figures)."""
     from kegel.cfd_cases.run import CfdPoint, run_case
 
     p = CfdPoint(bearing="32208", speed_rad_s=speed_rpm * math.pi / 30, temperature_K=TEMPERATURE_K,
                  oil_level_m=None, mesh=mesh, n_procs=n_procs, max_iterations=max_iterations, gap_ratio=gap,
                  cells_across_gap=cells, sector=sector)
-    case = CASES / case_name(gap, cells, mesh, sector, speed_rpm)
+    case = cases / case_name(gap, cells, mesh, sector, speed_rpm)
     t0 = time.monotonic()
     run_case(p, case, progress=True, log=lambda s: print(s, file=sys.stderr, flush=True))
     data = json.loads((case / "results.json").read_text())
     meta = json.loads((case / "kegel-case.json").read_text())
-    dest = STORE / case.name
+    dest = store / case.name
     dest.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(case / "results.json", dest / "results.json")
     t = data["torques_Nm"]
