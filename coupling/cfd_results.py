@@ -19,7 +19,8 @@ from typing import Any
 
 from ..base.errors import KegelInputError
 
-__all__ = ["BALANCE_LIMIT", "balance_of", "is_unbalanced", "unbalanced_reason", "cfd_loss_at", "find_cfd_result", "cfd_result_files", "read_cfd_results"]
+__all__ = ["BALANCE_LIMIT", "balance_of", "is_unbalanced", "unbalanced_reason", "cfd_loss_at", "find_cfd_result",
+           "cfd_result_files", "read_cfd_results"]
 
 SPEED_TOLERANCE = 0.005       # relative
 TEMPERATURE_TOLERANCE_K = 0.5
