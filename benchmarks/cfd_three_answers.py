@@ -142,7 +142,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--np", type=int, default=2)
     ap.add_argument("--max-iterations", type=int, default=1500,
                     help="iteration limit of each case (default 1500; from the runner's start the "
-                         "default gap's cases pass their steady test at 614-940 iterations)")
+                         "default gap's cases pass their steady test within 614-947 iterations)")
     ap.add_argument("--report", action="store_true", help="only re-read the stored rows")
     args = ap.parse_args(argv)
     command = "benchmarks/cfd_three_answers.py " + " ".join(sys.argv[1:] if argv is None else argv)

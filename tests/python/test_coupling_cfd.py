@@ -454,3 +454,21 @@ def test_thin_films_interpolate_through_a_zero_end(tmp_path):
                     oil_level_m=0.08, flooded=True)
     hi = runs[1][1]["thin_film_loss_Nm"]
     assert c["status"] == "interpolated" and c["thin_films_Nm"] == pytest.approx(0.5 * hi, rel=1e-6)
+
+
+def test_the_coupling_figures_in_the_docs_are_the_stored_studies():
+    """docs/cfd.md's coupling table (1 kN) and its light-load paragraph (50 N) quote the stored
+    runs of benchmarks/coupling_study.py; and at 50 N the oil slows the cage (slip rises), the
+    expected direction, while at 1 kN it hardly moves it."""
+    docs = " ".join((REPO / "docs" / "cfd.md").read_text().split())
+    res = REPO / "benchmarks" / "results"
+    for level in ("flooded", "shaft_center"):
+        for r in json.loads((res / f"coupling_study_1kN_2000rpm_{level}.json").read_text())["rows"]:
+            cells = f"| {100 * r['cage_slip']:.3f} | {1e3 * r['friction_torque_Nm']:.2f} |"
+            assert cells in docs and f"{1e3 * r['total_torque_Nm']:.2f} |" in docs, (level, cells)
+    off, on = sorted(json.loads((res / "coupling_study_50N_2000rpm_flooded.json").read_text())["rows"],
+                     key=lambda r: r["flow_forces"])
+    assert on["cage_slip"] > off["cage_slip"] + 0.03
+    assert (f"{100 * off['cage_slip']:.2f} % without and {100 * on['cage_slip']:+.2f} % with the flow forces"
+            in docs)
+    assert f"The totals, {1e3 * off['total_torque_Nm']:.1f} and {1e3 * on['total_torque_Nm']:.1f} mN m" in docs
