@@ -6,7 +6,7 @@ rollers at g = 0.08 D_w) are of the ``tiny`` mesh, whose wall size (0.16 D_w) pu
 cells across each 0.8 mm gap. The ``small`` level (wall size 0.09 D_w, 0.30 D_w away from the
 walls) is started from the shipped tiny run's last regular write (``--initial-from``, the fields
 mapped; the stop rule counts the tiny run's time towards its five cage revolutions) and run to
-the same stop rule. Made by, per speed N (2000 rpm so far):
+the same stop rule. Made by, per speed N (2000 and 4000 rpm so far):
 
     .venv/bin/kegel cfd run --bearing 32208 --speed "N rpm" --oil-level shaft_center --mesh small --np 2 \\
         --gap-ratio 0.08 --max-courant 10 --max-interface-courant 3 --max-wall-time "150 min" \\
