@@ -608,6 +608,12 @@ def test_the_runners_oil_bath_rule_on_a_run_it_was_not_chosen_on():
     assert stop_old < 3.1 and last_old / reference - 1 == pytest.approx(-0.074, abs=0.005)
 
 
+def _prose(name: str) -> str:
+    """A Markdown file of the repository with its line breaks and runs of spaces folded to one
+    space, so that a quoted figure is found wherever the text wraps."""
+    return " ".join((Path(__file__).resolve().parents[2] / name).read_text().split())
+
+
 #: The moving-mesh checks over the levelled stretch (docs/cfd.md, "Oil bath: frozen rotor or
 #: moving mesh"; benchmarks/cfd_oil_bath_moving_mesh.py): speed -> the stored JSON.
 MOVING_MESH_LEVELLED = {2000: "cfd_oil_bath_moving_mesh_levelled.json",
@@ -633,8 +639,7 @@ def test_the_moving_mesh_figures_in_the_docs_are_the_stored_checks(rpm):
     orbit = {k: 1e3 * b[k]["rollers_about_axis"]["mean_Nm"] for k in ("moving_mesh", "frozen_run_on")}
     assert abs(diff) < 0.01 and max(map(abs, quarters)) < 0.035
     assert abs(bal["moving_mesh"]) < 0.5 * abs(bal["frozen_run_on"])
-    docs = " ".join((root / "docs" / "cfd.md").read_text().split())
-    readme = " ".join((root / "README.md").read_text().split())
+    docs, readme = _prose("docs/cfd.md"), _prose("README.md")
     quoted = [f"{moving:.2f} against", f"{frozen:.2f}", f"{100 * diff:.1f} %",
               f"{100 * min(quarters):.1f}", f"{100 * max(quarters):+.1f} %",
               f"+{100 * bal['moving_mesh']:.1f} %", f"+{100 * bal['frozen_run_on']:.1f} %",
@@ -665,8 +670,7 @@ def test_the_oil_bath_mesh_figures_are_the_stored_runs(rpm):
     assert small["initial_state"]["time_from_rest_s"] >= 0.99 * 0.358 * 2000 / rpm
     assert row["small_over_tiny"] == pytest.approx(small["cfd_loss_Nm"] / tiny["cfd_loss_Nm"])
     assert row["total_small_Nm"] - row["total_tiny_Nm"] == pytest.approx(small["cfd_loss_Nm"] - tiny["cfd_loss_Nm"])
-    docs = " ".join((root / "docs" / "cfd.md").read_text().split())
-    readme = " ".join((root / "README.md").read_text().split())
+    docs, readme = _prose("docs/cfd.md"), _prose("README.md")
     up = f"+{100 * (row['small_over_tiny'] - 1):.1f} %"
     for s in (f"{1e3 * small['cfd_loss_Nm']:.2f} mN m ({up})", f"+{100 * small['balance']:.1f} %",
               f"+{100 * tiny['balance']:.1f} %", f"{1e3 * row['total_small_Nm']:.1f} mN m"):
