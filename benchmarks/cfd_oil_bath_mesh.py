@@ -42,11 +42,11 @@ OUT = HERE / "results" / "cfd_oil_bath_mesh.json"
 
 def _run(folder: Path) -> dict:
     """What one run's results.json and kegel-case.json say about its mesh, cost and answer."""
-    f = folder / "results.json"
-    if not f.is_file():
-        raise SystemExit(f"{folder}: no results.json (expected the run's results.json and kegel-case.json there; "
-                         f"see {Path(__file__).name}'s docstring for the command)")
-    d = json.loads(f.read_text())
+    for name in ("results.json", "kegel-case.json"):
+        if not (folder / name).is_file():
+            raise SystemExit(f"{folder}: no {name} (expected the run's results.json and kegel-case.json there; "
+                             f"see {Path(__file__).name}'s docstring for the command)")
+    d = json.loads((folder / "results.json").read_text())
     meta = json.loads((folder / "kegel-case.json").read_text())
     bal = d["angular_momentum_balance"]
     return {"case": folder.name, "mesh": d["fidelity"]["mesh"], "cells": d["fidelity"]["cells"],
@@ -73,6 +73,9 @@ def main(argv: list[str] | None = None) -> int:
         rpm = int(folder.name.split("_")[1][:-3])
         small = _run(folder)
         tiny = _run(TINY / folder.name.replace("_small_", "_tiny_"))
+        if rpm not in shipped:
+            raise SystemExit(f"{SHIPPED_TABLE}: no row at {rpm} rpm (expected one per small run: "
+                             f"benchmarks/cfd_oil_bath_real_rollers.py --speed {rpm})")
         s = shipped[rpm]
         rest = s["contact_plus_cfd_plus_thin_films_Nm"] - s["cfd_loss_Nm"]  # contact cut at g + thin films
         rows.append({"speed_rpm": rpm, "tiny": tiny, "small": small,
